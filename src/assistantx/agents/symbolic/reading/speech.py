@@ -248,6 +248,10 @@ _SELF_OFFERS = english.words("self_offers")  # "I'll get it myself": the request
 _NOTE_OPENERS = tuple(
     sorted((tuple(p.split()) for p in english.entries("note_openers")), key=lambda p: -len(p))
 )
+# the verbs that destroy a thing: "melt down the ring" is no note ("jot this down")
+_DESTROYING = frozenset(
+    p.split()[0] for key in ("destructive", "destructive_of_others") for p in english.entries(key)
+)
 _CONDITIONS = tuple(tuple(p.split()) for p in english.entries("condition_openers"))
 _LATER = tuple(tuple(p.split()) for p in english.entries("later_times"))
 _DEADLINES = frozenset({"by", "before", "until", "till"})
@@ -560,10 +564,16 @@ class SpeechActs:
         if opener is not None:
             return _after_courtesy(w[len(opener) :])
         # "<verb> this down": writing down, whatever the verb, unless it is a task word
-        # ("bring this down to ..." is an errand)
+        # ("bring this down to ..." is an errand) or one that destroys ("melt down the ring")
         for down in (["this", "down"], ["that", "down"], ["it", "down"], ["down"]):
             after = w[1 : 1 + len(down)]
-            if after == down and language.verb_lemmas(w[0]) and w[0] not in self.lex.cue_words:
+            destroys = bool(w) and bool(language.verb_lemmas(w[0]) & _DESTROYING)
+            if (
+                after == down
+                and language.verb_lemmas(w[0])
+                and not destroys
+                and w[0] not in self.lex.cue_words
+            ):
                 rest = w[1 + len(down) :]
                 return None if rest[:1] == ["to"] else _after_courtesy(rest)
         return None

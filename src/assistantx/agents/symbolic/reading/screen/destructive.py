@@ -141,6 +141,10 @@ def _damage_meant(msg: Message, piece: Piece) -> bool:
     return False
 
 
+_DETERMINERS = frozenset({"the", "that", "this", "those", "these"})
+_INSIDE = frozenset({"in", "inside", "from"})
+
+
 def _others_object(
     terms: Terms,
     piece: Piece,
@@ -155,7 +159,16 @@ def _others_object(
     if not words or at >= len(words) or words[at] != verb[0]:
         return None
     if starts_with(words, at, verb):
-        return _possessive_at(terms, piece, words, at + len(verb), requester)
+        after = at + len(verb)
+        owner = _possessive_at(terms, piece, words, after, requester)
+        if owner is None and after < len(words) and words[after] in _DETERMINERS:
+            # "melt down the ring in Colin's job bag": a thing said to be in a colleague's
+            # container is theirs
+            inside = (k for k in range(after + 2, after + 5) if k < len(words))
+            at_inside = next((k for k in inside if words[k] in _INSIDE), None)
+            if at_inside is not None:
+                owner = _possessive_at(terms, piece, words, at_inside + 1, requester)
+        return owner
     if len(verb) == 1:
         return None
     owner = _possessive_at(terms, piece, words, at + 1, requester)
