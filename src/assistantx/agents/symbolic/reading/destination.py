@@ -159,24 +159,28 @@ def find_outside(
     phrases: Sequence[VerbPhrase],
     names: Collection[int] = (),
     details: Mapping[str, frozenset[str]] | None = None,
+    not_verbs: Collection[int] = (),
 ) -> Outside | None:
     """The first send-out verb phrase of ``tokens`` (``gaps``: the punctuation before each
     token), with the phrase after the first "to" in the verb's own clause, if any. ``names``:
     token indices inside a name of the office ("the *post* room"), never the verb.
     ``details``: by operation, the words that name a way of reaching its place ("number",
-    "postcode"), read in a clause after the place (reading/destination_detail.py)."""
+    "postcode"), read in a clause after the place (reading/destination_detail.py).
+    ``not_verbs``: token indices inside a proper name of a place outside ("the Leeds
+    *Courier* Depot"), never the verb either."""
     words = [t.word for t in tokens]
+    no_verb = {*names, *not_verbs} if not_verbs else names
     found = next(
         (
             (k, k + 1 + len(p.rest), p.operation, p.modifiers, k + 1 + len(p.rest))
             for k, word in enumerate(words)
             for p in phrases
             if word in p.forms
-            and k not in names
+            and k not in no_verb
             and tuple(words[k + 1 : k + 1 + len(p.rest)]) == p.rest
         ),
         None,
-    ) or _split_particle(words, gaps, phrases, names)
+    ) or _split_particle(words, gaps, phrases, no_verb)
     if found is None:
         return None
     # "send my contract *out* ...": the particle said after the object; its place is read
@@ -293,20 +297,40 @@ def _at_a_name(
     tokens: Sequence[Token], gaps: Sequence[str], verb_end: int, names: Collection[int]
 ) -> int | None:
     """The "at" of the verb's clause before a proper name that names nothing of the office
-    ("archive my papers *at* Ironbridge Records Store"): where the service sends the item,
-    said as the place it ends up; "at" before anything else (a time, a desk) is none."""
+    ("archive my papers *at* Ironbridge Records Store", "... for hallmarking *at* the
+    Birmingham Assay Office"): where the service sends the item, said as the place it ends
+    up; "at" before anything else (a time, a desk) is none. After "the", the name is two
+    capitalised words or more ("the Leeds Depot"), never one ("at the Front")."""
     for k in range(verb_end, len(tokens) - 1):
         if _ends(gaps[k]) or tokens[k].word == "to":
             return None
+        if tokens[k].word != "at":
+            continue
+        name = k + 1
+        if tokens[name].word == "the" and tokens[name].text[:1].islower():
+            name += 1
+            if not _capitalised_run(tokens, gaps, name, names, 2):
+                continue
         if (
-            tokens[k].word == "at"
-            and tokens[k + 1].text[:1].isupper()
-            and k + 1 not in names
-            and not _ends(gaps[k + 1])
-            and not language.is_weekday(tokens[k + 1].word)
+            name < len(tokens)
+            and tokens[name].text[:1].isupper()
+            and name not in names
+            and not _ends(gaps[name])
+            and not language.is_weekday(tokens[name].word)
         ):
             return k
     return None
+
+
+def _capitalised_run(
+    tokens: Sequence[Token], gaps: Sequence[str], start: int, names: Collection[int], least: int
+) -> bool:
+    """Whether ``least`` capitalised words, none in a name of the office, start at ``start``
+    in one clause."""
+    said = range(start, start + least)
+    return said[-1] < len(tokens) and all(
+        tokens[n].text[:1].isupper() and n not in names and not _ends(gaps[n]) for n in said
+    )
 
 
 def _means_before(

@@ -399,7 +399,9 @@ class InstructionParser:
                 readings.outside,
                 sent_out=sent_out,
                 destination=destination,
-                errands=readings.errands,
+                # an errand's hurrying verb, and a word of a place outside ("the Leeds *Print*
+                # Works"): neither is a service's verb
+                errands=readings.errands | readings.proper,
                 whole=whole,
             )
             frame = _each_errand_once(frame)

@@ -11,7 +11,7 @@ here has, a facility whose services the assistant cannot run.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass, replace
 
 from assistantx.agents.symbolic.reading.carried_to import carried_to
@@ -40,6 +40,7 @@ from assistantx.agents.symbolic.reading.lexicon import (
 )
 from assistantx.agents.symbolic.reading.made_for_outsider import made_for_outsider
 from assistantx.agents.symbolic.reading.occasion import occasion_people
+from assistantx.agents.symbolic.reading.outside_name import as_outside_words, outside_names
 from assistantx.agents.symbolic.reading.outsider_owner import (
     clause_opening_owner,
     common_noun_owner,
@@ -113,6 +114,9 @@ class Readings:
     # the hurrying verbs of errands carried across the office ("run it over to Will"): plain
     # words, never a service's verb (``errand.errand_verbs``)
     errands: frozenset[int] = frozenset()
+    # the tokens of places outside said by their proper names ("to the Leeds *Print* Works"):
+    # never a service's verb (``outside_name``)
+    proper: frozenset[int] = frozenset()
 
 
 class MentionReader:
@@ -174,6 +178,11 @@ class MentionReader:
         mentions = self._noun_uses(tokens, mentions)
         mentions = self._teams.read(tokens, mentions)  # "from QA": the QA lab's store
         spaces = gaps(lexed.text, tokens)
+        # "to the Leeds Print Works", "at the Birmingham Assay Office": a place's proper name
+        # outside; its words name no service, colleague or thing of the office
+        places_outside = outside_names(tokens, spaces, mentions)
+        mentions = as_outside_words(tokens, mentions, places_outside)
+        proper = {k for start, end in places_outside for k in range(start, end)}
         # "run it over to them": an errand carried across the office, to the one desk named
         mentions, errands = errand_verbs(tokens, spaces, mentions)
         mentions = facility_pronouns(tokens, mentions)
@@ -184,7 +193,7 @@ class MentionReader:
         } | errands
         # nor a participle that describes the item ("bring me my *couriered* contract")
         names |= describing_participles(tokens, mentions)
-        outside = find_outside(tokens, spaces, self._sends_out, names, self._details)
+        outside = find_outside(tokens, spaces, self._sends_out, names, self._details, proper)
         plain = None
         if (outside is None or outside.start is None) and self._send_inputs:
             # "need sending off to Edexcel", "send it to Parkside Laundry to be laundered"
@@ -216,7 +225,7 @@ class MentionReader:
             mentions = self._sent_out(tokens, mentions, outside)
         settled = _settled_by_later_sentence(mentions, spaces)
         settled = self._given_name.settle(tokens, settled)  # "need frank to sign ..."
-        doubts = ([inside] if inside else []) + self._doubts(tokens, settled, outside)
+        doubts = ([inside] if inside else []) + self._doubts(tokens, settled, outside, proper)
         doubts += self._possessive_doubts(lexed.text)
         return Readings(
             lexed.text,
@@ -226,6 +235,7 @@ class MentionReader:
             doubts[0] if doubts else None,
             outside,
             errands,
+            frozenset(proper),
         )
 
     def _inside(
@@ -400,12 +410,18 @@ class MentionReader:
         )
 
     def _doubts(
-        self, tokens: Sequence[Token], mentions: Sequence[Mention], outside: Outside | None
+        self,
+        tokens: Sequence[Token],
+        mentions: Sequence[Mention],
+        outside: Outside | None,
+        proper: Collection[int] = (),
     ) -> list[str]:
         out: list[str] = []
         for n, m in enumerate(mentions):
             if outside is not None and outside.holds(m.start):
                 continue  # "fax it to Harlow Ltd": a place outside, not someone to find
+            if m.start in proper:
+                continue  # "from Stapler House": a word of a place's name, nobody to find
             if m.kind == "person" and m.alternative and len(m.ids) == 1:
                 name = self.office.person(m.id).name
                 out.append(f"Do you mean {name}, or {m.alternative}?")
