@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading import at_hand, shared_object
 from assistantx.agents.symbolic.reading._parties import Clause, Roles, recipient_of
+from assistantx.agents.symbolic.reading.asking_forms import asking_forms
 from assistantx.agents.symbolic.reading.cued_tool import cued_tool_owner
 from assistantx.agents.symbolic.reading.doer_nouns import is_doer_noun
 from assistantx.agents.symbolic.reading.file_had import colleagues_file, file_again
@@ -399,6 +400,10 @@ class TaskReader:
             for o in office.operations
             if o.product and o.shape(office) == "transform"
         }
+        # the things (papers or not) an operation makes something from
+        self.transformed = frozenset(
+            o.input for o in office.operations if o.input and o.shape(office) == "transform"
+        )
         self.product_words = {
             language.fold(name): t.id
             for t in office.item_types
@@ -574,6 +579,8 @@ class TaskReader:
         # "could the reel reader do my slide?": a facility as the doer of its own work
         doing = self._facility_doing(clause, items, roles)
         cues |= doing
+        # "can you scanner my document": a facility's name said as the verb, its own work
+        cues |= self._facility_as_verb(clause, items)
         if doing:
             cues.discard("give")  # its "take" is the machine's work, not a fetch
         # "put my headlamp on the charging shelf": the item goes *to* the facility
@@ -601,6 +608,10 @@ class TaskReader:
                 doc, own = made_from
                 if own:
                     roles.owners[-1] = requester
+        if doc is None and "copy" in cues:
+            # "can you assay my job bag": a thing (no paper) one of the office's operations
+            # makes something from is that operation's object
+            doc = next((m for m in physical if m.id in self.transformed), None)
         refers = any(m.kind == "pronoun" and not m.possessive for m in clause.mentions)
         if doc is None and refers and previous is not None and previous.item is not None:
             if self.kinds[previous.item] == "personal":  # "... and get Zhang to sign it"
@@ -686,6 +697,34 @@ class TaskReader:
                 for op in [self.office.operation(op_id)]
                 if any(m.id == op.input for m in later)
                 and (kind := SHAPE_KIND.get(op.shape(self.office))) is not None
+            }
+            if len(kinds) == 1:
+                return kinds
+        return set()
+
+    def _facility_as_verb(self, clause: Clause, items: list[Mention]) -> set[str]:
+        """ "can you scanner my document", "pls laminator my badge", "can you xrf my job bag"
+        (the word also the XRF's name): a facility's name said in the verb's place, its
+        object after it, asks for that facility's own work on the object; never another
+        service of the thing. Where the word said is also one of its operations' verbs, that
+        operation; the cue of its shape's task kind, none where they are several."""
+        ms = clause.mentions
+        for n, m in enumerate(ms):
+            if m.kind != "facility" or not _verb_position(ms, n):
+                continue
+            objects = {i.id for i in items if i.start >= m.end}
+            ops = [
+                op
+                for op_id in self.office.facility(m.id).operations
+                for op in [self.office.operation(op_id)]
+                if op.input is not None and op.input in objects
+            ]
+            said = m.text.lower()
+            named = [op for op in ops if any(said in asking_forms(v.lower()) for v in op.verbs)]
+            kinds = {
+                kind
+                for op in named or ops
+                if (kind := SHAPE_KIND.get(op.shape(self.office))) is not None
             }
             if len(kinds) == 1:
                 return kinds

@@ -102,6 +102,7 @@ from assistantx.agents.symbolic.reading.question_preface import without_question
 from assistantx.agents.symbolic.reading.reported_request import reported_requests
 from assistantx.agents.symbolic.reading.role_appositive import without_role_appositives
 from assistantx.agents.symbolic.reading.round_trip_work import RoundTripWork
+from assistantx.agents.symbolic.reading.routed_work import RoutedWork
 from assistantx.agents.symbolic.reading.screen.seated_where import without_seating
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.seated_subject import SeatedSubject
@@ -195,6 +196,8 @@ class Surface:
         # "my document is due a print": it needs one
         work = {w for k in task_kinds.person_kinds() for w in lex.cues.get(k, ())}
         self.due_service = DueService(office, {*lex.operation_nouns, *work})
+        # "my forceps need a go in the autoclave": the autoclave's work on them
+        self.routed_work = RoutedWork(office, lex.facilities, self.item_types)
         self.namesake_surnames = NamesakeSurnames(office)  # "Rosa - Álvarez, not Lindqvist"
         # "get it notarised" where the seal is a notary stamp: the seal's work, said as such
         self.lent_verbs = LentVerbs.from_office(
@@ -740,6 +743,9 @@ STEPS: tuple[Step, ...] = (
     # it needs one
     # e.g. "my document is due a print"
     Step("due_service", lambda s, t, a: s.due_service(t)),
+    # put my forceps through the autoclave
+    # e.g. "my forceps need a go in the autoclave"
+    Step("routed_work", lambda s, t, a: s.routed_work(t)),
     # Zhang wants one
     # e.g. "Zhang would like a stapler"
     Step(
