@@ -26,6 +26,7 @@ from helpers.music_school import music_school
 # The order of the rewrites as the parser ran them when they were one hand-written sequence.
 ORDER = [
     "pictographs",
+    "signed_off",
     "undotted",
     "fallback",
     "possessive_pronouns",
@@ -121,6 +122,7 @@ _OFFICES: dict[str, Callable[[], Office]] = {
 # Each step's example, a message it changes in one of the offices below.
 EXAMPLES: dict[str, str] = {
     "pictographs": "bring me a pen and no marker 😩",
+    "signed_off": "heat my lunch cheers",
     "undotted": "bring the book to Dr. Grace Huang",
     "fallback": "bring me a stapler, or if there isn't one, scissors",
     "possessive_pronouns": "Wang and Zhou both sent slides. print hers and bring it to me",
@@ -204,6 +206,7 @@ EXAMPLES: dict[str, str] = {
 # step and gone after it, words there only after it, or "").
 EFFECTS: dict[str, tuple[str, str, str]] = {
     "pictographs": ("default", "😩", ""),
+    "signed_off": ("default", "cheers", ""),
     "undotted": ("default", "Dr.", "Dr Grace"),
     "possessive_pronouns": ("default", "print hers", "print her one"),
     "question_preface": ("default", "frank question:", ""),

@@ -108,6 +108,7 @@ from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.seated_subject import SeatedSubject
 from assistantx.agents.symbolic.reading.sent_file import sent_files
 from assistantx.agents.symbolic.reading.sent_for_service import sent_for_service
+from assistantx.agents.symbolic.reading.signed_off import without_sign_off
 from assistantx.agents.symbolic.reading.signed_on import initials, signed_on
 from assistantx.agents.symbolic.reading.something_from import SomethingFrom
 from assistantx.agents.symbolic.reading.speaker_lack import given_thing, speaker_lacks
@@ -254,6 +255,10 @@ class Surface:
         self.paper_makers = paper_makers(office)  # "print": a paper made from a file
         # the initials colleagues sign on with ("JL: ...")
         self.signs = initials(p.name for p in office.people)
+        # the words of the colleagues' names and aliases, as written ("Ta", "Cheers")
+        self.name_words = frozenset(
+            w for p in office.people for n in (p.name, *p.aliases) for w in n.lower().split()
+        )
 
     def reading_with(self, lex: Lexicon, terms: Terms) -> Surface:
         """The same steps and office parts, read with ``lex`` (a name read as the requester
@@ -437,6 +442,12 @@ STEPS: tuple[Step, ...] = (
     # the face is tone only
     # e.g. "bring me a pen and no marker 😩"
     Step("pictographs", lambda s, t, a: without_pictographs(t)),
+    # a chat sign-off after a request only closes it: no thanks, no word of the request
+    # e.g. "heat my lunch cheers"
+    Step(
+        "signed_off",
+        lambda s, t, a: without_sign_off(t, s.lex.cue_words, s.name_words.__contains__),
+    ),
     # an abbreviation's stop ends no sentence
     # e.g. "bring the book to Dr. Grace Huang"
     Step("undotted", lambda s, t, a: undotted(t)),

@@ -227,8 +227,8 @@ def _recipient_outsider(terms: Terms, msg: Message, piece: Piece) -> Outsider | 
             continue  # "the courier guy": the next one is the head
         if nxt < len(tokens) and not _ends_phrase(tokens[nxt], breaks[nxt], nxt in office_at):
             continue  # "the guest lounge", "the visitor chair": it modifies another noun
-        if nxt < len(tokens) and not breaks[nxt].strip() and _item_at(mentions, nxt):
-            continue  # "my guest package": the office's item, named for whom it is about
+        if _modifies_an_item(tokens, breaks, mentions, nxt, office_at):
+            continue  # "my guest package", "my volunteer rota spreadsheet": the office's item
         start = n
         while (
             start > 0
@@ -350,6 +350,33 @@ def _unnamed_doer(tokens: tuple[Token, ...], at: int) -> bool:
 
 def _item_at(mentions: Sequence[Mention], at: int) -> bool:
     return any(m.kind == "item" and m.start == at for m in mentions)
+
+
+def _modifies_an_item(
+    tokens: tuple[Token, ...],
+    breaks: tuple[str, ...],
+    mentions: Sequence[Mention],
+    at: int,
+    office_at: set[int],
+) -> bool:
+    """Whether the words from ``at`` on, with nothing between them, go on as one noun phrase
+    to the office's item, its head: the person noun before them is the item's modifier ("my
+    guest package", "my volunteer rota spreadsheet", "the client contacts file"), never a
+    person. The run holds nouns and words the dictionary does not know ("rota"); a word of
+    another kind, a determiner, a stop or another of the office's names ends it ("give my
+    client a copy", "give the visitor Wang's file": the person is the receiver)."""
+    for k in range(at, min(len(tokens), at + _MOST_MODIFIERS + 1)):
+        if breaks[k].strip():
+            return False
+        if _item_at(mentions, k):
+            return True
+        word = tokens[k].word
+        if k in office_at or word in _STOPS or word in english.words("common"):
+            return False
+        read = language.lemmas(word)
+        if read and "NOUN" not in read:
+            return False  # "give my client copies ..." goes on; "give the guest said ..." not
+    return False
 
 
 def _outsider_noun(word: str) -> bool:
