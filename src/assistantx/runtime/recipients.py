@@ -69,6 +69,7 @@ from assistantx.core.receiving_place import (
     pronoun_receiving_place,
 )
 from assistantx.core.task_schema import Task, TaskFrame, operation_of
+from assistantx.core.wanted_to_have import REACH, wants_to_have
 from assistantx.memory.short_term import ShortTermMemory
 from assistantx.runtime.handed_over import subject_asked_to_have, taken_across
 from assistantx.runtime.wanted_own import handed_on, wants_own_thing, wishes_said
@@ -671,6 +672,8 @@ def _said_to_need(words: list[_Word], m: _Mention, rooms: frozenset[str] = froze
                 k += 1
             at = k
     after = tuple(w.folded for w in words[at : at + 4])
+    if not m.possessive and wants_to_have([w.folded for w in words[at : at + REACH]]):
+        return True  # "Kit wants to borrow my torch": a want of having it (the reader's too)
     for phrase in _NEEDS:
         said = phrase[1:] if m.possessive and phrase[0] in ("s", "is") else phrase
         if m.possessive and said == phrase:

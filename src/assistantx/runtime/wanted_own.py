@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
+from assistantx.core.wanted_to_have import REACH, want_of_having
+
 # the wish or need said right after the colleague's name
 _WANTS = frozenset({"wants", "needs", "want", "need", "wanted", "needed"})
 # "Wang's after my stapler": "'s" (is) and "after", which wants the thing
@@ -29,6 +31,9 @@ def wants_own_thing(words: Sequence[str], end: int, *, folded_is: bool = False) 
     wants or needs the requester's own thing ("wants my report"); ``folded_is``: the name
     was written with "'s", which before "after" is "is" ("Wang's after my stapler": is
     after, wants it), as the reader reads it."""
+    having = 0 if folded_is else want_of_having(words[end : end + REACH])
+    if having:  # "wants to borrow my report": the want of having it (``core.wanted_to_have``)
+        return end + having < len(words) and words[end + having] in _OWN
     if end + 1 >= len(words) or words[end + 1] not in _OWN:
         return False
     return words[end] == _AFTER if folded_is else words[end] in _WANTS

@@ -65,6 +65,23 @@ _IDIOM_WANTING = re.compile(
     re.IGNORECASE,
 )
 # "would Zhang like a stapler?": the helping verb before the name that wants
+# "Zhang would like to borrow my stapler", "Zhang might want to use your charger": the helping
+# verb's want of having a thing (``borrow_words``, ``self_taking_verbs``) is the plain want,
+# "Zhang wants to borrow my stapler", read as that is (a transfer to Zhang, asked alone); left
+# as said, "would like to use" named nobody who wants it and the room it was taken to was asked
+_HAVING = sorted(english.words("borrow_words") | english.words("self_taking_verbs"))
+_WANTING_TO_HAVE = re.compile(
+    r"(?P<who>\b[^\W\d_]+(?:\s+[^\W\d_]+){0,2}?)\s+(?:"
+    + _hedged("modal_wants")
+    + "|"
+    + _hedged("tentative_wants")
+    + r")\s+to\s+(?P<verb>"
+    + "|".join(re.escape(v) for v in _HAVING)
+    + r")(?=\s+"
+    + _WANTED
+    + ")",
+    re.IGNORECASE,
+)
 _ASKED = re.compile(
     r"\bwould\s+(?P<who>[^\W\d_]+(?:\s+[^\W\d_]+){0,2}?)\s+(?:like|love)(?=\s+" + _WANTED + ")",
     re.IGNORECASE,
@@ -97,5 +114,12 @@ def named_wants(
         named = any(is_person(" ".join(words[k:])) for k in range(len(words)))
         return f"{said_who} would" if named else match.group(0)
 
-    text = _IDIOM_WANTING.sub(said, _WOULD.sub(would, text))
+    def wants_to_have(match: re.Match[str]) -> str:
+        said_who = match.group("who")
+        if named_tail(said_who, is_person) is None and not is_subject(said_who.split()[-1]):
+            return match.group(0)
+        return f"{said_who} wants to {match.group('verb')}"
+
+    text = _WANTING_TO_HAVE.sub(wants_to_have, _WOULD.sub(would, text))
+    text = _IDIOM_WANTING.sub(said, text)
     return _ASKED.sub(asked, _WANTING.sub(said, text))

@@ -1,7 +1,9 @@
 """Who receives a thing taken to a room, when the request names nobody to give it to: the one
-colleague the message says needs it or is there. "Zhang needs my stapler for the review. Can
-you take it over to the meeting room?", "Zhang needs my stapler. take it to the meeting room
-please", "Zhang's in the meeting room, take my stapler there ... to the meeting room".
+colleague the message says needs it (or wants to borrow, use or have it) or is there. "Zhang
+needs my stapler for the review. Can you take it over to the meeting room?", "Zhang needs my
+stapler. take it to the meeting room please", "Zhang's in the meeting room, take my stapler
+there ... to the meeting room", "Zhang wants to borrow my stapler, take it to the meeting
+room" (``core.wanted_to_have``).
 
 The robot hands things to people (the hand-over code goes to whoever receives it), never to
 rooms, so a room alone leaves the receiver to be asked (``parts``). But a message that says,
@@ -21,6 +23,7 @@ from assistantx.agents.symbolic.reading.tokens import Token
 from assistantx.core import english
 from assistantx.core.office import Office
 from assistantx.core.task_schema import TaskFrame
+from assistantx.core.wanted_to_have import REACH, wants_to_have
 
 # Where a thing goes: "to the meeting room", "into the boardroom".
 _TO = frozenset({"to", "into"})
@@ -66,6 +69,8 @@ def _needs(tokens: Sequence[Token], m: Mention) -> bool:
     after = tuple(t.word for t in tokens[m.end : m.end + 4])
     if not m.possessive and after[:1] and after[0] in _NEEDS:
         return True
+    if not m.possessive and wants_to_have([t.word for t in tokens[m.end : m.end + REACH]]):
+        return True  # "Zhang wants to borrow my stapler": a want of having it, no mere wish
     for phrase in _NEED_PHRASES:
         said = phrase[1:] if m.possessive and phrase[0] in ("s", "is") else phrase
         if m.possessive and said == phrase:

@@ -81,7 +81,7 @@ _AWAY_TAIL = 2
 _JOINS = frozenset((*english.entries("clause_joins"), *english.entries("consequence_joins")))
 
 
-def _said_away(words: list[str]) -> bool:
+def said_away(words: list[str]) -> bool:
     """Whether the words say "he"/"she"/"they" are away in a clause of their own: the whole
     piece ("she's out today"), or its first clause before a join ("he's off today so he won't
     mind", "she's out, and she won't mind")."""
@@ -99,7 +99,7 @@ def _said_away(words: list[str]) -> bool:
 _THEIRS = frozenset({"his", "her", "hers", "their", "theirs"})
 
 
-def _away(terms: Terms, msg: Message, requester: str) -> set[str]:
+def away_people(terms: Terms, msg: Message, requester: str) -> set[str]:
     """The colleagues a piece of the message says are away ("Otto is away", "Otto's off
     today"), as the fact rule reads it."""
     out: set[str] = set()
@@ -123,8 +123,8 @@ def _absent_owners_thing(terms: Terms, msg: Message, requester: str) -> bool:
     ruler"); "Otto is away, bring me some staples" asks for nobody's. A request that says
     its owner is out in a clause of its own ("take Pat's seal while she's out") asks for a
     colleague's thing by their possessive or "his"/"her"."""
-    away = _away(terms, msg, requester)
-    pronoun_away = any(_said_away(p.words) for p in msg.pieces)
+    away = away_people(terms, msg, requester)
+    pronoun_away = any(said_away(p.words) for p in msg.pieces)
     for piece in msg.pieces:
         if not piece.acts.request:
             continue

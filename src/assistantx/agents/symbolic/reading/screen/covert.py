@@ -37,7 +37,11 @@ request is read and the owner asked as always (reported_leave.py)."""
 
 from __future__ import annotations
 
-from assistantx.agents.symbolic.reading.screen.absent_owner import while_away
+from assistantx.agents.symbolic.reading.screen.absent_owner import (
+    away_people,
+    said_away,
+    while_away,
+)
 from assistantx.agents.symbolic.reading.screen.destructive import commanded
 from assistantx.agents.symbolic.reading.screen.english import starts_with, while_clause
 from assistantx.agents.symbolic.reading.screen.findings import Finding
@@ -62,6 +66,8 @@ _BEFORE_WHO = tuple(tuple(entry.split()) for entry in english.entries("covert_be
 _BEFORE_STATES = tuple(tuple(entry.split()) for entry in english.entries("covert_before_states"))
 # Whose thing, when it is not a name: a colleague's ("grab *his* tape")
 _THEIRS = frozenset({"his", "her", "hers", "their", "theirs"})
+# "use Pat's seal on my contract": a colleague's seal put to use by the one who asks
+_USING = english.words("seal_using_verbs")
 # The words of stamping or signing a paper ("I only need to *stamp* one thing")
 _STAMPING = frozenset(
     w for kind in ("seal", "sign") for w in english.word_table("cues").get(kind, ())
@@ -207,14 +213,17 @@ def _skips_asking_in(msg: Message, piece: Piece, requester: str, terms: Terms) -
 
 def _their_seal_used(terms: Terms, msg: Message, requester: str) -> bool:
     """Whether a request of the message asks for a colleague's seal (their possessive, or
-    "his"/"her" before it) while a clause says they are out, beside words of stamping or
-    signing outside the seal's own name ("take Pat's seal while she's out, I need to stamp
-    my form")."""
+    "his"/"her" before it) while they are said to be out, beside words of stamping or signing
+    outside the seal's own name ("take Pat's seal while she's out, I need to stamp my form")
+    or the seal put to use ("use Pat's seal on my contract"). Out is said in a clause of the
+    request ("while she's out") or in a piece of its own, by a pronoun ("take Pat's seal and
+    stamp my form, she's at lunch") or by the owner's name ("..., Pat's on holiday")."""
     tool = terms.office.seal_tool()
-    if tool is None or not any(while_away(p.words) for p in msg.pieces):
+    if tool is None:
         return False
     asked = False
     stamping = False
+    owners: set[str] = set()
     for p in msg.pieces:
         tokens, mentions = p.lexed.tokens, p.lexed.mentions
         # the seal by its item's name, or "seal"/"stamp" said as a noun after its owner
@@ -224,26 +233,31 @@ def _their_seal_used(terms: Terms, msg: Message, requester: str) -> bool:
             for n, m in enumerate(mentions)
             if (m.kind == "item" and tool in m.ids) or (m.kind == "cue" and m.ids == ("seal",))
         ]
-        theirs = [
-            m
-            for n, m in seals
-            if n > 0
-            and (
-                (
-                    mentions[n - 1].kind == "person"
-                    and mentions[n - 1].possessive
-                    and requester not in mentions[n - 1].ids
-                )
-                or tokens[m.start - 1].word in _THEIRS
-            )
-        ]
+        theirs = []
+        for n, m in seals:
+            if n == 0:
+                continue
+            owner = mentions[n - 1]
+            possessed = owner.kind == "person" and owner.possessive and requester not in owner.ids
+            if not (possessed or tokens[m.start - 1].word in _THEIRS):
+                continue
+            theirs.append(m)
+            if possessed:
+                owners.update(owner.ids)
+            # "use Pat's seal on my contract", "use her seal": the seal put to use
+            said = owner.start if possessed else m.start - 1
+            stamping = stamping or (said > 0 and tokens[said - 1].word in _USING)
         named = {n for m in theirs for n in range(m.start, m.end)}
         stamping = stamping or any(
             t.word in _STAMPING for n, t in enumerate(tokens) if n not in named
         )
         if theirs and (p.acts.imperative or commanded(terms, p)):
             asked = True
-    return asked and stamping
+    if not (asked and stamping):
+        return False
+    if any(while_away(p.words) or said_away(p.words) for p in msg.pieces):
+        return True
+    return bool(owners & away_people(terms, msg, requester))
 
 
 def covert(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
