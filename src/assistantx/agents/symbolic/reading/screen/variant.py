@@ -143,6 +143,12 @@ def _variant(terms: Terms, msg: Message, piece: Piece) -> Variant | None:
         authority = any(_has(reach, phrase) and set(phrase) & set(words) for phrase in _AUTHORITY)
         if not authority and named_by_content(terms.office, m.ids[0]):
             continue  # "Wang's budget planning file": which file, by its topic
+        if (
+            not authority
+            and not set(words) & _FINISHES
+            and _owned_made_from(terms, tokens, start, m.ids[0])
+        ):
+            continue  # "plot my genoa panels": made from the speaker's own, by its topic
         if not authority and content_of_a_reason(terms.office, msg, piece, m.ids[0], words):
             continue  # "Wang needs the budget printout. Print my file for him": its content
         if (
@@ -215,6 +221,25 @@ def _what_another_is_for(
         w == "to" and k + 1 < len(between) and language.verb_lemmas(between[k + 1])
         for k, w in enumerate(between)
     )
+
+
+_OWNERS = frozenset({"my", "our", "your", "his", "her", "their"})
+# how a made thing is made ("colour", "laminated"): a variant asked, whoever's it is
+_FINISHES = english.words("product_finishes")
+
+
+def _owned_made_from(terms: Terms, tokens: tuple[Token, ...], start: int, item_type: str) -> bool:
+    """Whether the product ``item_type`` is said after whose it is ("my", "Kai's") and the
+    office makes it only from something put in (a cut file, a document): the words between
+    say which of their things it is made from ("my *genoa* panels"), never a kind the office
+    does not make; a product made from nothing ("my iced tea") keeps its variant."""
+    if start == 0:
+        return False
+    whose = tokens[start - 1]
+    if whose.word not in _OWNERS and not whose.possessive:
+        return False
+    makers = [op for op in terms.office.operations if op.product == item_type]
+    return bool(makers) and all(op.input is not None for op in makers)
 
 
 def _made_here(terms: Terms, mention: Mention) -> bool:
