@@ -29,6 +29,10 @@ _frame = frame_reader(word_names, "petra")
         "to be frank, the new rota is a mess",
         "the phone bill came in high again, ugh",
         "we got the grant!!",
+        # praise of a thing just told of (round 254: "..., lovely thing" was asked about)
+        "the new mug has a lid, lovely thing",
+        "lovely thing",
+        "the new kettle boils in a minute. great kit",
     ],
 )
 def test_a_remark_is_answered_in_words(text: str) -> None:
@@ -45,6 +49,9 @@ def test_a_remark_is_answered_in_words(text: str) -> None:
         ("bring Bill my stapler", "transfer", "bill"),
         ("ask Frank to sign my form", "sign", "petra"),
         ("could you bring Noble a mug", "transfer", "noble"),
+        ("lovely thing, can you bring me a mug", "transfer", "petra"),
+        ("one more thing - could you bring me a mug", "transfer", "petra"),
+        ("last thing, could you bring me a mug", "transfer", "petra"),
     ],
 )
 def test_a_request_beside_or_naming_them_is_read_as_before(

@@ -721,6 +721,30 @@ def remark(terms: Terms, piece: Piece) -> bool:
 
 _PRAISED_WORK = english_words("praised_work")
 _PRAISE_WHOLE = tuple(tuple(p.split()) for p in english_entries("praise_remarks"))
+# praise of a thing ("lovely thing"), never which thing ("one more thing", "the last thing")
+_THINGS = frozenset({"thing", "things", "kit"})
+_WHICH_THING = frozenset(
+    {
+        "one",
+        "more",
+        "other",
+        "another",
+        "last",
+        "next",
+        "first",
+        "only",
+        "same",
+        "main",
+        "final",
+        "extra",
+        "whole",
+        "different",
+        "real",
+        "small",
+        "big",
+        "little",
+    }
+)
 _ASKING = english_words("request_markers") | english_words("request_modals")
 
 
@@ -745,6 +769,8 @@ def praise_remark(piece: Piece) -> bool:
             n += 1
         if n == adjectives or n >= len(words) or words[n] not in _PRAISED_WORK:
             return False
+        if words[n] in _THINGS and set(words[:n]) & _WHICH_THING:
+            return False  # "one more thing - could I ...": which thing, no praise
         n += 1
     return not set(words[n:]) & (_ASKING | {"you", "u"} - {"thank"})
 
