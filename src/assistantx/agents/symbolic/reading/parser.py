@@ -153,6 +153,7 @@ from assistantx.agents.symbolic.reading.screen.one_of_several import chosen_of_s
 from assistantx.agents.symbolic.reading.screen.owned_head import with_owned_chosen
 from assistantx.agents.symbolic.reading.screen.pronoun_subject import with_subject_answered
 from assistantx.agents.symbolic.reading.screen.recipients_doing import ASIDES
+from assistantx.agents.symbolic.reading.screen.unknown_work import answered_with
 from assistantx.agents.symbolic.reading.several_owners import (
     any_owner_meant,
     unowned_mine,
@@ -782,6 +783,14 @@ class InstructionParser:
                 text = kept
                 frame = self.parse(text, requester)
                 continue
+            if (
+                frame.question is not None
+                and (with_said := answered_with(frame.question, answer)) is not None
+            ):  # "What should I do about the document with Wang?" "take it to her"
+                answered = self.parse(with_said, requester)
+                if answered.understood:
+                    frame = answered
+                    continue
             picked = chosen_of_several(self.screen.terms, text, answer)
             if picked is not None:  # "one of Sunny's tools": "do you mean the pump or ...?"
                 text = picked

@@ -129,6 +129,8 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
             return None  # "chuck a hairnet my way": towards the speaker, an errand
         after = " ".join(rest[particle:])
         lexed = terms.lex.read(after)
+        if vague and (with_whom := _sorted_with(terms, piece, lexed)) is not None:
+            return with_whom  # "sort out the contract thing with Wang": what, asked
         # "lacquer the violin for me": a verb with no particle on a thing said definitely is
         # work on that thing, the speaker its beneficiary ("track down a stapler for me" gets
         # one, as before)
@@ -187,6 +189,44 @@ def unknown_work(terms: Terms, msg: Message, piece: Piece, requester: str) -> Fi
             return None  # "sort a coffee for me": a thing got, as before
         return _asked(terms, piece, said, thing)
     return None
+
+
+# How the question about vague work with a colleague opens ("What should I do about the
+# document with Wang Fang?"), so the parser reads the answer against it (``answered_with``)
+VAGUE_WITH = "What should I do about the "
+_ASKED_WITH = re.compile(rf"^{re.escape(VAGUE_WITH)}(?P<thing>.+?) with (?P<person>.+?)\?")
+
+
+def answered_with(question: str, answer: str) -> str | None:
+    """The answer to the question about vague work with a colleague, with its "it" said as
+    the speaker's thing and its "her"/"him"/"them" as the colleague ("take it to her" →
+    "take my document to Wang Fang"); None for any other question."""
+    asked = _ASKED_WITH.match(question)
+    if asked is None:
+        return None
+    said = re.sub(r"\bit\b", f"my {asked.group('thing')}", answer, flags=re.IGNORECASE)
+    return re.sub(r"\b(?:her|him|them)\b", asked.group("person"), said, flags=re.IGNORECASE)
+
+
+def _sorted_with(terms: Terms, piece: Piece, lexed: Lexed) -> Finding | None:
+    """A vague verb of work on a thing "with" a colleague ("can you sort out the contract
+    thing with Wang"): the colleague is whom the matter is settled with, never the thing's
+    receiver; what is to be done is asked, nothing moves (it was handed to Wang)."""
+    words = [t.word for t in lexed.tokens]
+    if "with" not in words:
+        return None
+    at = words.index("with")
+    people = [m for m in lexed.mentions if m.kind == "person" and m.start == at + 1]
+    things = [m for m in lexed.mentions if m.kind == "item" and m.end <= at]
+    if len(people) != 1 or len(people[0].ids) != 1 or not things:
+        return None
+    person = terms.office.person(people[0].ids[0]).name
+    thing = terms.office.item_type(things[-1].ids[0]).name
+    question = (
+        f"{VAGUE_WITH}{thing} with {person}? Tell me what you need, for example that I take it "
+        f"to {person}."
+    )
+    return Finding("which", piece, "vague work with a colleague", message=question)
 
 
 def _known(terms: Terms, verb: str, lemmas: frozenset[str]) -> bool:
