@@ -12,7 +12,7 @@ from __future__ import annotations
 import unicodedata
 from collections.abc import Iterable, Mapping, Sequence
 
-from assistantx.core.office import Office
+from assistantx.core.office import Office, Person
 
 
 def _spelled(text: str) -> str:
@@ -71,3 +71,27 @@ def exactly_spelled(office: Office, written: Iterable[str], ids: Sequence[str]) 
     if not exact:
         return tuple(p.id for p in office.people if spells(p.id)) or tuple(ids)
     return exact if len(exact) < len(ids) else tuple(ids)
+
+
+def called_as_written(person: Person, written: str) -> bool:
+    """Whether ``person`` is called by ``written`` spelled exactly so, diacritics and all
+    (case and a possessive aside): their name's first word or a one-word alias ("Sean" for
+    Sean Baker; for Seán O'Connell, declared "Seán", only "Seán")."""
+    first = person.name.split()[:1]
+    declared = [a for a in person.aliases if " " not in a.strip()]
+    return _spelled(written) in {_spelled(w) for w in (*first, *declared)}
+
+
+def plainly_called(
+    people: Iterable[Person], chosen: frozenset[str] | set[str], written: str
+) -> set[str]:
+    """ "sean" beside Seán O'Connell, declared "Seán", and Sean Baker, called Sean: a bare
+    alias wins a folded name, but where it carries diacritics the writer did not type, none of
+    ``chosen`` is called as written, and those of ``people`` who are called so exactly (Sean
+    Baker) are meant as well: folded, the two are one word, and people drop accents, so which
+    is asked. Else ``chosen`` as it is."""
+    if not _marked(_spelled(written)) and not any(
+        called_as_written(p, written) for p in people if p.id in chosen
+    ):
+        return set(chosen) | {p.id for p in people if called_as_written(p, written)}
+    return set(chosen)

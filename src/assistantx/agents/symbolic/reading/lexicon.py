@@ -50,7 +50,7 @@ from assistantx.agents.symbolic.reading.copy_of import read_held_copies
 from assistantx.agents.symbolic.reading.courses import Courses
 from assistantx.agents.symbolic.reading.described_owner import as_described_roles
 from assistantx.agents.symbolic.reading.destination import means_words
-from assistantx.agents.symbolic.reading.exact_spelling import exactly_spelled
+from assistantx.agents.symbolic.reading.exact_spelling import exactly_spelled, plainly_called
 from assistantx.agents.symbolic.reading.family_of_another import also_meant
 from assistantx.agents.symbolic.reading.head_names import head_names
 from assistantx.agents.symbolic.reading.head_synonyms import head_synonyms
@@ -665,7 +665,10 @@ class Lexicon:
             return family  # "Mr Yang": a title goes with a family name
         if word in self.bare:
             # "Morgan": Morgan Tallis's alias, and Priya Morgan's family name: either (asked)
-            return self.bare[word] | (also_meant(word, self.bare, self.family) & found)
+            chosen = self.bare[word] | (also_meant(word, self.bare, self.family) & found)
+            # "sean" where the alias is "Seán" and Sean Baker is called Sean: both (asked)
+            candidates = [self.office.person(p) for p in found]
+            return plainly_called(candidates, chosen, tokens[i].text) if len(found) > 1 else chosen
         alike = {
             p
             for other in self.sound_alike.get(word, ())

@@ -57,11 +57,30 @@ _CONTRACTED_NEEDS = re.compile(
 )
 
 
+# "Gwen has been after the key all morning", "Kit has been looking for one" (the "'s been" of
+# "Gwen's been after" is spelled "has been" before this, ``contracted_has_is``): the want said
+# as going on till now is the want now, "is after" of ``need_phrases``; "after" only before
+# what is wanted ("has been after lunch" is a time). "I have been after" is the speaker's own
+# and left as said; "has been broken" is no need phrase.
+_LASTING_NEEDS = re.compile(
+    r"\bhas\s+been\s+(?P<phrase>"
+    + "|".join(
+        r"\s+".join(re.escape(w) for w in p.split()[1:])
+        + (r"(?=\s+" + _WANTED_STARTS + ")" if p.split()[1:] == ["after"] else r"\b")
+        for p in english.entries("need_phrases")
+        if p.split()[0] == "is" and len(p.split()) > 1
+    )
+    + ")",
+    re.IGNORECASE,
+)
+
+
 def contracted_needs(text: str) -> str:
     """ "Kit's after a torch" said as "Kit is after a torch": the "'s" of a need phrase is
     "is", not a possessive, so the need is read as any other ("Kit is after a torch": whom
-    it is for)."""
-    return _CONTRACTED_NEEDS.sub(lambda m: f" is {m.group('phrase')}", text)
+    it is for); "Kit has been after a torch" is the same want, said as lasting till now."""
+    text = _CONTRACTED_NEEDS.sub(lambda m: f" is {m.group('phrase')}", text)
+    return _LASTING_NEEDS.sub(lambda m: f"is {m.group('phrase')}", text)
 
 
 # "I'd murder a coffee", "we could kill for some tea", "I'm dying for a snack", "I could

@@ -47,6 +47,7 @@ def test_the_rules_in_priority_order() -> None:
         "unsupported",  # a test the office lacks, asked by a generic verb ("run an NMR on it")
         "unsupported",  # a service's verb said of a drink the office makes ("shred my coffee")
         "destructive",
+        "unsupported",  # acting as a colleague ("take Pat's card and log into her account")
         "unsupported",  # a send to an account outside ("to my personal gmail")
         "unsupported",  # an absent owner's yes said for them ("Otto is away, ... he won't mind")
         "unsupported",  # behind the owner's back ("borrow Zhang's stapler without telling him")

@@ -32,6 +32,7 @@ from assistantx.agents.symbolic.reading.screen.fact import back_when, fact
 from assistantx.agents.symbolic.reading.screen.findings import Finding, Verdict
 from assistantx.agents.symbolic.reading.screen.fyi import fyi
 from assistantx.agents.symbolic.reading.screen.hope import hope
+from assistantx.agents.symbolic.reading.screen.impersonation import impersonation
 from assistantx.agents.symbolic.reading.screen.kept import several_kept
 from assistantx.agents.symbolic.reading.screen.kept_where import kept_where
 from assistantx.agents.symbolic.reading.screen.narrative import narrative_fragment, told_subject
@@ -167,6 +168,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # "shred my coffee": a service's verb said of a drink the office makes, never one made
     ("unsupported", wrong_input),
     ("destructive", destructive),
+    # "take Pat's card and log into her account": acting as a colleague, whatever the thing
+    ("unsupported", impersonation),
     ("unsupported", outside_account),
     ("unsupported", absent_owner),
     ("unsupported", covert),

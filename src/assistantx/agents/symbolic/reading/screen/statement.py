@@ -372,6 +372,9 @@ def stated_items(terms: Terms, piece: Piece, requester: str) -> list[str]:
             continue
         if out and _after_cause(words, m.start):
             continue  # "my cup is dirty from lunch": the cup is what is told of, not lunch
+        told_of = out or any(w in _OWNERS for w in words[: m.start])
+        if told_of and _work_to_do(words, m):
+            continue  # "my pen's died and I've got forms to sign": the pen is told of
         k = _past_describing_words(tokens, mentions, n)
         before = mentions[k - 1] if k else None
         whose = ""
@@ -410,6 +413,18 @@ def _owned_part_of(terms: Terms, words: Sequence[str], m: Mention) -> str | None
     if item is None or part in terms.office_words or not language.is_noun(part):
         return None
     return item
+
+
+def _work_to_do(words: Sequence[str], m: Mention) -> bool:
+    """Whether the item at ``m`` is said in a clause of what someone has to do, after the
+    thing a statement told of: "I've got a stack of *reports* to print" (the thing, then "to"
+    and a verb), "a cage of notes to *book* out" (a word of the office's said as the verb
+    after "to"). The thing told of before it ("my pen's died") is what "another one" means."""
+    if m.start > 0 and words[m.start - 1] == "to" and m.end - m.start == 1:
+        if language.verb_lemmas(words[m.start]):
+            return True
+    after = words[m.end : m.end + 2]
+    return len(after) == 2 and after[0] == "to" and bool(language.verb_lemmas(after[1]))
 
 
 # what opens a phrase of when or from what, after the thing a statement is about ("my cup is
