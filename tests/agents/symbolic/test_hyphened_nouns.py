@@ -43,3 +43,48 @@ def test_the_print_out_after_printing_is_still_the_printout() -> None:
 )
 def test_the_rewrite(text: str, expected: str) -> None:
     assert hyphened_nouns(text, frozenset({"paper"})) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "item"),
+    [
+        ("drop-in visitor needs a pen, can you bring me one", "pen"),
+        ("Walk-in forgot theirs, can you fetch me a stapler?", "stapler"),
+        ("Stand-by team needs scissors, bring me some", "scissors"),
+    ],
+)
+def test_a_compound_opening_a_clause_is_its_subject(text: str, item: str) -> None:
+    """ "Walk-in forgot theirs": a noun, the clause's subject, never the verb "walk" asked
+    (declined "I can't walk", blind round 256) nor "in visitor" a recipient."""
+    tasks = tasks_of("default", text, "lee")
+    assert [(k, i, r) for k, i, _, r in tasks] == [("transfer", item, "lee")]
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("Walk-in forgot theirs", "Walkin forgot theirs"),
+        ("thanks. drop-in visitor needs one", "thanks. dropin visitor needs one"),
+        ("pick-up my parcel", "pick-up my parcel"),  # the verb, its object after it
+        ("check-in till is down", "check-in till is down"),  # the office's own word
+    ],
+)
+def test_the_opening_rewrite(text: str, expected: str) -> None:
+    assert hyphened_nouns(text, frozenset({"checkin"})) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("walk it over to Wang", None),  # the verb: declined as before
+        ("drop in my stapler to Wang", [("transfer", "stapler", "lee", "wang")]),
+    ],
+)
+def test_the_verb_unhyphened_keeps_its_reading(
+    text: str, expected: list[tuple[str, str, str, str]] | None
+) -> None:
+    tasks = tasks_of("default", text, "lee")
+    if expected is None:
+        assert tasks == []
+    else:
+        assert tasks == expected

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Collection, Iterable, Mapping
 
-from assistantx.core import language
+from assistantx.core import english, language
 
 # "Reprographics room", "Reprographics office": the room is the one word before a word that
 # only says it is a room, so "repro" clips it too.
@@ -68,6 +68,30 @@ def place_heads(names: Iterable[tuple[str, str]], taken: Collection[str]) -> dic
         for head, ids in found.items()
         if len(ids) == 1 and head not in taken and language.plural(head) not in taken
     }
+
+
+# A kind of room or place said alone for the office's place its name opens with ("the cafe"
+# for "Cafe kitchen"); a town's shop said so is the office's place too ("the pharmacy" for a
+# hospital's "Pharmacy hatch").
+_ROOM_KINDS = english.words("room_kind_nouns") | frozenset(
+    e for e in english.entries("outside_shops") if " " not in e
+)
+
+
+def place_openers(names: Iterable[tuple[str, str]]) -> dict[str, frozenset[str]]:
+    """Opening words → ids, for the opening words of each several-word place name that name
+    a kind of room or place alone: one such word ("the cafe" of "Cafe counter", "the kitchen"
+    of "Kitchen counter"), or several ending in a word that only says it is a room ("the post
+    room" of "Post room counter"), as people say a place by the room it is in. Several places
+    may open alike ("Cafe counter", "Cafe kitchen"): the words name the office's own room."""
+    found: dict[str, set[str]] = {}
+    for name, ident in names:
+        words = name.split(" ")
+        for end in range(1, len(words)):
+            last = words[end - 1]
+            if last in _ROOM_KINDS or (end > 1 and last in ROOM_WORDS and words[0].isalpha()):
+                found.setdefault(" ".join(words[:end]), set()).add(ident)
+    return {opener: frozenset(ids) for opener, ids in found.items()}
 
 
 def _head(key: str) -> str | None:

@@ -70,6 +70,11 @@ _NOT_PLACE = (
 )
 
 
+# The verbs that open a send-out's purpose infinitive before the work's participle ("to *be*
+# laundered", "to *get* resoled"): the work done there, never the place it goes.
+_WORK_AFTER = [["be"], ["get"]]
+
+
 @dataclass(frozen=True)
 class VerbPhrase:
     """How a send-out service is asked for: its first word in any form, then the rest as
@@ -233,8 +238,8 @@ def find_outside(
                 break  # "to Acme Ltd so that they have it today": a clause of its own
             if end > start and words[end] == "for" and words[end + 1 : end + 2] in _FOR_WHOM:
                 break  # "to Crown Court for me": whom the request is for, not the place
-            if end > start and words[end] == "to" and words[end + 1 : end + 2] == ["be"]:
-                break  # "to Parkside Laundry to be laundered": the work, not the place
+            if end > start and words[end] == "to" and words[end + 1 : end + 2] in _WORK_AFTER:
+                break  # "to Parkside Laundry to be laundered" / "to get resoled": the work
             end += 1
         # "to the customer please, Mrs Patel at 14 Elm Road": the address said after it is
         # the place; the destination spans both, so neither is read as someone to find
@@ -249,8 +254,10 @@ def find_outside(
         phrase = said if said and len(said) <= _LONGEST and not unclear else None
         if phrase is not None and set(words[start:end]) <= _PRONOUNS | _PERSONS:
             phrase = None  # "courier it to them": no place said; asked where
-        if words[start] == "be":
-            phrase = None  # "sent off to be dry cleaned": the work asked, no place said
+        if [words[start]] in _WORK_AFTER:
+            # "sent off to be dry cleaned", "send my shoes off to get resoled": the work asked
+            # (its purpose infinitive), no place said
+            phrase = None
         if phrase is None:
             start = end = None
         else:

@@ -32,3 +32,15 @@ def in_later_event(tokens: Sequence[Token], start: int) -> bool:
         if tokens[k].opens or tokens[k].after_pause:
             return False
     return False
+
+
+def in_time_clause(tokens: Sequence[Token], at: int) -> bool:
+    """Whether token ``at`` (a place's preposition) stands in a clause of time about a later
+    event ("... before *it comes into* the studio"): where the thing goes afterwards, never
+    where the request takes it."""
+    for k in range(at - 1, max(-1, at - 1 - _REACH), -1):
+        if tokens[k].word in _TIME_OPENERS:
+            return k + 1 < at and tokens[k + 1].word in _SUBJECTS
+        if tokens[k].opens or tokens[k].after_pause:
+            return False
+    return False

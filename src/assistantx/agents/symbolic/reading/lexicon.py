@@ -37,6 +37,7 @@ from assistantx.agents.symbolic.reading.clipped_names import (
     clipped_item,
     clipped_names,
     place_heads,
+    place_openers,
 )
 from assistantx.agents.symbolic.reading.clipped_phrases import clipped_phrases
 from assistantx.agents.symbolic.reading.clipped_verbs import ClippedVerbs
@@ -324,6 +325,9 @@ class Lexicon:
     # place's slot ("in dispatch"), the verb elsewhere (``verb_named_places``)
     verb_places: dict[str, str] = field(default_factory=dict)
     clipped_verb_places: dict[str, str] = field(default_factory=dict)
+    # the opening words of place names that name a kind of room ("cafe" of "Cafe counter"),
+    # whether one place's or several's (``place_openers``)
+    room_openers: frozenset[str] = frozenset()
     max_words: int = 1
     cues: dict[str, frozenset[str]] = field(default_factory=dict)  # task kind → words
     cue_words: frozenset[str] = frozenset()
@@ -553,6 +557,13 @@ class Lexicon:
         )
         for head, loc_id in heads.items():
             lex.places.setdefault(head, loc_id)
+        # "from the cafe": a place named by the kind of room its name opens with, when only
+        # one place's name opens so (several: ``room_openers``, the office's all the same)
+        openers = place_openers((key_of(loc.name), loc.id) for loc in office.locations)
+        lex.room_openers = frozenset(openers)
+        for opener, ids in openers.items():
+            if len(ids) == 1 and opener not in {*taken, *lex.cue_words}:
+                lex.places.setdefault(opener, next(iter(ids)))
         named = [
             *(n for t in office.item_types for n in (t.name, *t.synonyms)),
             *(n for f in office.facilities for n in (f.name, *f.synonyms)),

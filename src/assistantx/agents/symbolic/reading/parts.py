@@ -35,6 +35,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from assistantx.agents.symbolic.reading.event_clause import in_time_clause
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.occasion import occasion_people
 from assistantx.agents.symbolic.reading.original_back import original_of_copy
@@ -239,6 +240,8 @@ def _place_left_out(
             k -= 1
         if tokens[k].word not in _TO_PLACE:
             continue
+        if in_time_clause(tokens, k):
+            continue  # "freeze it before it comes into the studio": when, not where
         if m.kind == "place":
             facilities = [f for f in office.facilities if f.location == m.id]
         elif office.facility(m.id).operations:

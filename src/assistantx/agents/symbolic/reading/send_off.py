@@ -30,6 +30,8 @@ _SEND = frozenset(language.verb_forms("send")) | {"send"}
 # Verbs of the item going out of the office, read as sending only with a particle ("go out").
 _GO = frozenset(language.verb_forms("go")) | {"go"}
 _PARTICLES = frozenset({"off", "out", "away"})
+# "to be laundered", "to get resoled": the verbs before a send-out's participle
+_WORK_AUX = frozenset({"be", "get"})
 _CLAUSE_END = frozenset(".!?;,\n")
 # how far after "send" its particle or "to" may stand: "send my signed rental form out on the
 # van run to ..." puts ten words between (the clause's end bounds it too)
@@ -125,9 +127,10 @@ def _outside_name(
 def _named_after(
     words: Sequence[str], to: int, stop: int, done_forms: Mapping[str, frozenset[str]]
 ) -> str | None:
-    """ "... to Parkside Laundry to be laundered": the send-out its participle names."""
-    for j in range(to + 1, stop - 2):
-        if words[j] == "to" and words[j + 1] == "be":
+    """ "... to Parkside Laundry to be laundered", "... off to get resoled": the send-out its
+    participle names."""
+    for j in range(to, stop - 2):
+        if words[j] == "to" and words[j + 1] in _WORK_AUX:
             named = [op for op, forms in done_forms.items() if words[j + 2] in forms]
             return named[0] if len(named) == 1 else None
     return None

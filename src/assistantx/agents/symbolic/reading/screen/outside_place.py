@@ -21,7 +21,7 @@ is the office's; a send-out service named beside it sends things there, read as 
 from __future__ import annotations
 
 import itertools
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 
 from assistantx.agents.symbolic.reading.fault_subject import subject_of_fault
 from assistantx.agents.symbolic.reading.screen.english import split_words
@@ -112,12 +112,16 @@ def _at(words: list[str], n: int, phrase: tuple[str, ...]) -> bool:
     return tuple(words[n : n + len(phrase)]) == phrase
 
 
-def _shop_at(words: list[str], n: int, office_at: set[int]) -> int:
+def _shop_at(words: list[str], n: int, office_at: set[int], rooms: Collection[str]) -> int:
     """The length of a town's shop named at ``n`` as where an errand goes ("to the post
-    office"), or 0."""
+    office"), or 0. A shop's word that opens the names of the office's own places
+    (``rooms``: "the cafe" of a "Cafe counter" and a "Cafe kitchen") is the office's, unless
+    a phrase placing it outside follows ("the cafe round the corner")."""
     for shop in _SHOPS:
         end = n + len(shop)
         if not _at(words, n, shop) or office_at.intersection(range(n, end)):
+            continue
+        if " ".join(shop) in rooms and not any(_at(words, end, loc) for loc in _LOCATORS):
             continue
         nxt = words[end] if end < len(words) else ""
         if nxt and nxt not in _COMMON and nxt not in _STILL_PLACING and language.is_noun(nxt):
@@ -142,7 +146,7 @@ def _errand_outside(terms: Terms, piece: Piece, office_at: set[int]) -> bool:
     # "fax my letter to the bank": an office service's verb sends the thing there
     served = verb < len(words) and words[verb] in terms.service_verbs
     for n in range(len(words)):
-        found = _shop_at(words, n, office_at)
+        found = _shop_at(words, n, office_at, terms.lex.room_openers)
         if found and not (served and n >= 2 and "to" in words[n - 2 : n]):
             outside.append(range(n, n + found))
             continue
