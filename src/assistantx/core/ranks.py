@@ -26,6 +26,17 @@ _ARTICLES = frozenset({"the", "our"})
 
 def rank_titles(office: Office) -> dict[str, frozenset[str]]:
     """Each rank phrase (folded words, "station officer") with the one person holding it."""
+    return {rank: ids for rank, ids in _ranks(office).items() if len(ids) == 1}
+
+
+def shared_ranks(office: Office) -> dict[str, frozenset[str]]:
+    """Each rank phrase that several colleagues hold ("driver" of "Driver Lund" and "Driver
+    Park"), with them: "the driver" names one of them, and which is asked; it is no name of
+    any of them (the consent guard reads only ``rank_titles``)."""
+    return {rank: ids for rank, ids in _ranks(office).items() if len(ids) > 1}
+
+
+def _ranks(office: Office) -> dict[str, frozenset[str]]:
     held: dict[str, set[str]] = {}
     for p in office.people:
         surname = said_words(p.name)[-1:]
@@ -44,7 +55,7 @@ def rank_titles(office: Office) -> dict[str, frozenset[str]]:
     return {
         rank: frozenset(ids)
         for rank, ids in held.items()
-        if len(ids) == 1 and not set(rank.split()) <= names  # "Olive B" is no rank
+        if not set(rank.split()) <= names  # "Olive B" is no rank
     }
 
 

@@ -87,7 +87,7 @@ from assistantx.agents.symbolic.reading.verb_phrases import VerbPhrases
 from assistantx.core import english, language, name_parts, task_kinds
 from assistantx.core.name_reading import is_word_name, numeral, read_name, slot_at
 from assistantx.core.office import Office
-from assistantx.core.ranks import COURTESY_TITLES, rank_titles
+from assistantx.core.ranks import COURTESY_TITLES, rank_titles, shared_ranks
 from assistantx.core.task_schema import SHAPE_KIND
 from assistantx.memory.names import TITLES, normalize
 
@@ -494,6 +494,11 @@ class Lexicon:
                 lex.alias_words.add(phrase)
                 # "give it to the curator" (of "Curator Moreau"): a rank is a role, said in
                 # lower case too, as "the manager" of "Manager Mao" is
+                lex.roles.setdefault(phrase, set()).update(holders)
+        for phrase, holders in shared_ranks(office).items():
+            if " " not in phrase and phrase not in lex.people and phrase not in lex.name_words:
+                # "drop it off with the driver" (of "Driver Lund" and "Driver Park"): one of
+                # them, asked which, never somebody outside the office
                 lex.roles.setdefault(phrase, set()).update(holders)
         # a name as the office writes it first, then the forms made from names: "scales" named
         # for the weighing scales is never the plural of another thing's "scale"

@@ -123,3 +123,39 @@ def named_wants(
     text = _WANTING_TO_HAVE.sub(wants_to_have, _WOULD.sub(would, text))
     text = _IDIOM_WANTING.sub(said, text)
     return _ASKED.sub(asked, _WANTING.sub(said, text))
+
+
+# "Chinedu has run out of zip ties", "Wang ran out of paper" ("'s run out" is "has run out" by
+# now): a colleague's supply used up (``used_up_phrases``), said to an assistant that fetches
+# the office's supplies, is that colleague's want of more (blind round 254: "chinedu's run out
+# of zip ties down at the valet bay" was only noted)
+_RUN_OUT = re.compile(
+    r"(?P<who>\b[^\W\d_]+(?:\s+[^\W\d_]+){0,2}?)(?:\s+(?:"
+    + _alternatives("used_up_phrases")
+    + r")|['’]s\s+(?:"
+    + _alternatives("contracted_used_up_phrases")
+    + r"))(?=\s+(?P<thing>[^\W\d_]+(?:[\s-]+[^\W\d_]+){0,3}))",
+    re.IGNORECASE,
+)
+
+
+def named_lacks(
+    text: str,
+    is_person: Callable[[str], bool],
+    is_subject: Callable[[str], bool],
+    used_up: Callable[[str], bool],
+) -> str:
+    """``text`` with a colleague's used-up supply read as "<name> needs <thing>"
+    (``used_up``: whether the words after the lack open with a supply the office gives
+    anyone and uses up; a thing of their own, a machine's paper
+    ("the printer has run out of paper") and "I've run out" are left as said)."""
+
+    def said(match: re.Match[str]) -> str:
+        said_who = match.group("who")
+        if named_tail(said_who, is_person) is None and not is_subject(said_who.split()[-1]):
+            return match.group(0)
+        if not used_up(match.group("thing")):
+            return match.group(0)
+        return f"{said_who} needs"
+
+    return _RUN_OUT.sub(said, text)

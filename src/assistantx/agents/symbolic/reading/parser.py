@@ -104,6 +104,7 @@ from assistantx.agents.symbolic.reading.machine_choice import (
     service_question,
     with_service,
 )
+from assistantx.agents.symbolic.reading.machine_fetched import machine_fetched
 from assistantx.agents.symbolic.reading.name_chosen import with_name_chosen
 from assistantx.agents.symbolic.reading.named_once import the_one_named, the_ones_named
 from assistantx.agents.symbolic.reading.needed_by import for_needer, needer
@@ -461,6 +462,11 @@ class InstructionParser:
             left_out = operation_left_out(self.office, readings, set(), named)
             if left_out is not None:
                 frame = TaskFrame(requester=requester, question=left_out)
+        if not frame.tasks and (frame.question is not None or frame.decline is not None):
+            # "bring me the shredder": a machine stays where it is; what to do with it is asked
+            machine = machine_fetched(self.office, readings.tokens, readings.mentions)
+            if machine is not None:
+                return TaskFrame(requester=requester, question=machine)
         if frame.question == NOT_UNDERSTOOD:
             terms, tokens, mentions = self.screen.terms, readings.tokens, readings.mentions
             choices = machine_choices(self.office, tokens, mentions, requester)

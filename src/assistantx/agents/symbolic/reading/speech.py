@@ -168,6 +168,10 @@ _GRACIOUS = english.words("gracious_asks")
 # ten where it carries a phrase of place ("the holly wreath on the reception desk is ...").
 _PLAIN_SUBJECT = 7
 _BARE_COPULAS = frozenset({"is", "are", "was", "were", "has", "have"})
+# "the van is back from Pinewood", "stamp's back": a thing or person back again, told
+_RETURN_COPULAS = frozenset({"is", "are", "was", "were"})
+_RETURN_AFTER = frozenset({"from", "in", "at", "on", "again", "now", "already", "safe"})
+_RETURN_SUBJECT = 4  # "the big white van is back"
 _OTHERS_LACKS = tuple(tuple(p.split()) for p in english.entries("others_lack_phrases"))
 _LACK_JOINERS = english.words("others_lack_joiners")
 _THIRD_PERSONS = frozenset({"he", "she", "they"})
@@ -860,6 +864,8 @@ class SpeechActs:
             return True  # "drive in slot 4 has died": a fault told, context for the ask
         if _adjective_subject_told(w):
             return True  # "free chlorine looked low on my kit": told, "free" is no command
+        if returned_told(w) and self.question(words, asks=False) is None:
+            return True  # "van is back from Pinewood": a return told, whatever "van" names
         if not w or self._imperative(w) or self.question(words, asks=False) is not None:
             return False
         if service_command(w, self.lex.operation_words):
@@ -1496,3 +1502,19 @@ def _adjective_subject_told(w: list[str]) -> bool:
     if len(w) < 3 or "ADJ" not in language.lemmas(w[0]):
         return False
     return language.is_noun(w[1]) and language.is_past_verb(w[2])
+
+
+def returned_told(w: list[str]) -> bool:
+    """ "van is back from Pinewood", "the stamp is back": a subject of one to a few words that
+    are no asking words, "is"/"are" and "back", then nothing or where it came from: a return
+    told, context only, whatever the subject names in the office (an item's word, a service's
+    verb: "stamp is back from Leeds" is no stamping asked); the capitalised word after its
+    "from" is where it came back from, nobody to look up (blind round 252)."""
+    for k in range(1, min(len(w) - 1, _RETURN_SUBJECT + 1)):
+        if w[k] not in _RETURN_COPULAS:
+            continue
+        before = set(w[:k])
+        if before & (_YOU | _PLEASE | _MODALS | _AUX | _WH) or w[k + 1] != "back":
+            return False
+        return len(w) == k + 2 or w[k + 2] in _RETURN_AFTER
+    return False

@@ -75,7 +75,7 @@ from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
 from assistantx.agents.symbolic.reading.lacked_purpose import lacked_purposes
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.material_work import material_work
-from assistantx.agents.symbolic.reading.named_want import named_wants
+from assistantx.agents.symbolic.reading.named_want import named_lacks, named_wants
 from assistantx.agents.symbolic.reading.namesake_surnames import NamesakeSurnames
 from assistantx.agents.symbolic.reading.near_possessive import near_possessives
 from assistantx.agents.symbolic.reading.needed_done import needed_done
@@ -103,6 +103,7 @@ from assistantx.agents.symbolic.reading.reported_request import reported_request
 from assistantx.agents.symbolic.reading.role_appositive import without_role_appositives
 from assistantx.agents.symbolic.reading.round_trip_work import RoundTripWork
 from assistantx.agents.symbolic.reading.routed_work import RoutedWork
+from assistantx.agents.symbolic.reading.run_off import RunOff
 from assistantx.agents.symbolic.reading.screen.seated_where import without_seating
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.agents.symbolic.reading.seated_subject import SeatedSubject
@@ -136,6 +137,12 @@ _SUBJECT_PROBE = "needs"
 # the cues of errands, sendings and buyings: a purpose said with one ("for the take") is none
 # of the services a purpose's modifier names
 _NOT_SERVICE_CUES = frozenset({"give", "send", "make", "produce"})
+
+
+# the words before a supply said used up ("out of *any* paper")
+_SUPPLY_ARTICLES = frozenset(
+    {"a", "an", "any", "some", "the", "more", "all", "their", "his", "her"}
+)
 
 
 @dataclass(frozen=True, slots=True)
@@ -218,6 +225,7 @@ class Surface:
         self.work_forms = terms.service_verbs | {
             f for w in PERSON_WORK for f in language.verb_forms(w)
         }
+        self.run_off = RunOff(office)  # "run me off two copies": making copies
         self.round_trip = RoundTripWork(office)  # "take it to the kitchen and bring it back"
         # what the office's things are declared for ("measure"), for a lack of one
         self.purposes = frozenset(p.lower() for t in office.item_types for p in t.purposes)
@@ -306,6 +314,22 @@ class Surface:
         wipes")."""
         words = content([t.word for t in self.lex.tokens(clause)])
         return speaker_lacks(words, given_thing(self.lex))
+
+    def used_up_supply(self, phrase: str) -> bool:
+        """Whether ``phrase`` opens with (after an article) a supply the office gives anyone
+        and that is used up in use: a consumable, or one a facility keeps for anyone ("zip
+        ties down at the bay", "any paper")."""
+        words = [t.word for t in self.lex.tokens(phrase)]
+        while words and words[0] in _SUPPLY_ARTICLES:
+            words = words[1:]
+        for size in (3, 2, 1):
+            type_id = self.lex.items.get(" ".join(words[:size])) if len(words) >= size else None
+            if type_id is None:
+                continue
+            kind = self.office.item_type(type_id)
+            supplied = any(s.type == type_id for f in self.office.facilities for s in f.supplies)
+            return kind.kind in ("belonging", "product") and (kind.consumable or supplied)
+        return False
 
     def names_item(self, phrase: str) -> bool:
         """Whether ``phrase`` is one of the office's items the office can give and nothing
@@ -497,6 +521,9 @@ STEPS: tuple[Step, ...] = (
         "place_doers",
         lambda s, t, a: s.place_doers(t),
     ),
+    # copies made
+    # e.g. "can you run off my report", "run a printout off my file"
+    Step("run_off", lambda s, t, a: s.run_off(t)),
     # the tool's work said as the office's verb ("notarised" of a notary stamp: "sealed")
     # e.g. "get my contract notarized"
     Step("lent_verbs", lambda s, t, a: s.lent_verbs.read(t)),
@@ -762,6 +789,12 @@ STEPS: tuple[Step, ...] = (
     Step(
         "named_wants",
         lambda s, t, a: named_wants(t, s.one_name, s.subject_name),
+    ),
+    # Zhang needs some
+    # e.g. "Wang has run out of paper"
+    Step(
+        "named_lacks",
+        lambda s, t, a: named_lacks(t, s.one_name, s.subject_name, s.used_up_supply),
     ),
     # the count names nothing
     # e.g. "Two things: a pen and a stapler"

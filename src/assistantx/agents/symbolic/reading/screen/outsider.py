@@ -30,6 +30,7 @@ from dataclasses import dataclass
 
 from assistantx.agents.symbolic.reading.destination import means_words
 from assistantx.agents.symbolic.reading.event_clause import in_later_event
+from assistantx.agents.symbolic.reading.left_with import left_with
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.colleague_need import colleague_needs
 from assistantx.agents.symbolic.reading.screen.english import split_words
@@ -248,7 +249,9 @@ def _recipient_outsider(terms: Terms, msg: Message, piece: Piece) -> Outsider | 
         if before in _DOER_VERBS and _unnamed_doer(tokens, n):
             continue  # "get someone to sign my contract": who does it is open, asked later
         given = before in _GIVING and _item_after(mentions, n)
-        if before not in _TO and not given:
+        # "drop it off with the driver": a thing left with them is handed to them
+        left = before == "with" and left_with([t.word for t in tokens], start)
+        if before not in _TO and not given and not left:
             continue
         if before == "for" and _colleague_receives(msg):
             continue  # "print my quote for the juke customer and give it to Robin": about
