@@ -40,20 +40,26 @@ def others_purpose(tokens: Sequence[Token], mentions: Sequence[Mention]) -> set[
     return set()
 
 
-# "Kit's after a torch", "Kit's looking for one": the need phrases said with "'s" for "is"
-# ("s after", "s looking for" of ``need_phrases``); "after" only before what is wanted ("Kit's
-# after a torch", never "Kit's after-school club")
+# what opens the thing wanted after "after" ("Kit's after *a* torch")
 _WANTED_STARTS = r"(?:a|an|the|some|one|another|any|his|her|their|my|your)\b"
-_CONTRACTED_NEEDS = re.compile(
-    r"(?<=\w)['’]s\s+(?P<phrase>"
-    + "|".join(
+
+
+def _need_phrases_after(first: str) -> str:
+    """The ``need_phrases`` that open with ``first`` ("s", "is"), less that word, as one
+    alternation; "after" only before what is wanted."""
+    return "|".join(
         r"\s+".join(re.escape(w) for w in p.split()[1:])
         + (r"(?=\s+" + _WANTED_STARTS + ")" if p.split()[1:] == ["after"] else r"\b")
         for p in english.entries("need_phrases")
-        if p.split()[0] == "s" and len(p.split()) > 1
+        if p.split()[0] == first and len(p.split()) > 1
     )
-    + ")",
-    re.IGNORECASE,
+
+
+# "Kit's after a torch", "Kit's looking for one": the need phrases said with "'s" for "is"
+# ("s after", "s looking for" of ``need_phrases``); "after" only before what is wanted ("Kit's
+# after a torch", never "Kit's after-school club")
+_CONTRACTED_NEEDS = re.compile(
+    r"(?<=\w)['’]s\s+(?P<phrase>" + _need_phrases_after("s") + ")", re.IGNORECASE
 )
 
 
@@ -63,15 +69,7 @@ _CONTRACTED_NEEDS = re.compile(
 # what is wanted ("has been after lunch" is a time). "I have been after" is the speaker's own
 # and left as said; "has been broken" is no need phrase.
 _LASTING_NEEDS = re.compile(
-    r"\bhas\s+been\s+(?P<phrase>"
-    + "|".join(
-        r"\s+".join(re.escape(w) for w in p.split()[1:])
-        + (r"(?=\s+" + _WANTED_STARTS + ")" if p.split()[1:] == ["after"] else r"\b")
-        for p in english.entries("need_phrases")
-        if p.split()[0] == "is" and len(p.split()) > 1
-    )
-    + ")",
-    re.IGNORECASE,
+    r"\bhas\s+been\s+(?P<phrase>" + _need_phrases_after("is") + ")", re.IGNORECASE
 )
 
 
