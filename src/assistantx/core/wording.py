@@ -131,8 +131,16 @@ def _own_object_at(said: list[str]) -> int:
 
 
 def _names_what_it_makes(said: list[str], made: frozenset[str]) -> bool:
-    """Whether the name's own object is what the operation makes ("print a banner")."""
-    return bool(made) and bool({w.lower() for w in said[_own_object_at(said) :]} & made)
+    """Whether the name's own object is what the operation makes: after an article ("print
+    a banner"), or bare, where every word after the verb is a word of the product ("print
+    barcode labels" that makes barcode labels; "laser print" stays a verb)."""
+    if not made:
+        return False
+    if {w.lower() for w in said[_own_object_at(said) :]} & made:
+        return True
+    rest = {w.lower() for w in said[1:]}
+    singular = {w[:-1] if w.endswith("s") and w not in made else w for w in rest}
+    return bool(rest) and said[0].lower() not in made and singular <= made
 
 
 def _without_own_object(said: list[str], made: frozenset[str] = frozenset()) -> list[str]:

@@ -153,11 +153,22 @@ def mentioned_requests(office: Office, text: str) -> list[str]:
         for form in word_forms(w)
     }
     haystack = _without_things(original, things, products, phrases)
+    # an operation asked for by its whole name ("could anyone print barcode labels") is
+    # that one service: read before any of its words is taken for another's means or verb
+    named_whole: list[str] = []
+    for op in sorted(office.operations, key=lambda op: -len(op.name)):
+        name = normalize(op.name)
+        if " " in name and op.id in words and f" {name} " in haystack:
+            at[op.id] = min(at.get(op.id, len(original)), original.find(f" {name} "))
+            haystack = haystack.replace(f" {name} ", " | ")
+            named_whole.append(name)
     haystack = _means_left_out(office, words, haystack)
     # the office's words are used up as they are read; a thing whose name holds a word of
     # work by hand ("date stamp", "signature pad") is taken out first, so lending it is no
     # request to seal or sign (a one-word name stays: "stamp my form" asks for the work)
     rest = _without_things(original, [n for n in things if " " in n], set(), phrases)
+    for name in named_whole:
+        rest = rest.replace(f" {name} ", " | ")
     # the longest phrase first, whichever operation's: "3d print" is the 3D printer's, not
     # the plotter's "print" inside it
     office_forms = sorted(

@@ -43,6 +43,13 @@ def test_the_real_thing_takes_the_names_object_place(name: str, said: str) -> No
         # the name's object is what the operation makes: kept, the thing worked on after "from"
         ("print a banner", "banner", "print a banner from Amber's file"),
         ("cut a key", "spare_key", "cut a key from Amber's file"),
+        # a bare object, every word of it what the operation makes: kept the same way
+        ("print barcode labels", "barcode_labels", "print barcode labels from Amber's file"),
+        ("print labels", "label", "print labels from Amber's file"),
+        ("grind coffee", "coffee", "grind coffee from Amber's file"),
+        # a two-word verb whose first word is also the product's is no verb and object
+        ("laser print", "laser_print", "laser print Amber's file"),
+        ("print barcodes", "box_label", "print barcodes Amber's file"),
         # what it makes is no word of the name's object: the verb with the thing, as above
         ("patch a tube", "repair_note", "patch Amber's file"),
     ],
