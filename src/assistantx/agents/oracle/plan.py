@@ -62,6 +62,9 @@ class Visit:
 class Forward:
     source: str  # role key or "@requester"
     target: str  # role key, person id or "@requester"
+    # the file item sent ("audio:ines"), where the work takes one of the office's several
+    # kinds of file; None: the source's own file (``Office.file_of``)
+    file: str | None = None
 
 
 @dataclass
@@ -325,7 +328,7 @@ def _add_part(
             source, made = op.input or "", op.product or ""
             plan.add_role(role)
             product = f"{made}:{a}"
-            plan.forwards.append(Forward(REQUESTER, role.key))
+            plan.forwards.append(Forward(REQUESTER, role.key, office.file_of(a, source)))
             place = role.facility or ""
             plan.visits.append(Visit(place, role.key, (Code(role.key, product, "produce"),)))
             recipient = _recipient(plan, part, who)

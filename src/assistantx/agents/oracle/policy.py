@@ -220,12 +220,16 @@ def optimal_script(
     # 2. files: each to each person once. The requester runs the printer: it is their file;
     # the keeper who prints it is the one it is also to be sent to: one forward serves both
     # (a second one would only repeat the first)
-    pairs: list[tuple[str, str]] = []
+    # (a file named only where it is not the source's own: the one kind of several the work
+    # takes, "audio:ines" for the CD burner)
+    pairs: list[tuple[str, str, str | None]] = []
     for f in plan.forwards:
-        pair = (who(f.source), who(f.target))
+        source = who(f.source)
+        file = None if f.file in (None, office.file_of(source)) else f.file
+        pair = (source, who(f.target), file)
         if pair[0] != pair[1] and pair not in pairs:
             pairs.append(pair)
-    forwards: list[Action] = [ForwardFile(source=s, target=t) for s, t in pairs]
+    forwards: list[Action] = [ForwardFile(source=s, target=t, file=file) for s, t, file in pairs]
     if forwards:
         feedback = yield forwards
         if not feedback.ok:
