@@ -70,7 +70,11 @@ def _place_names(office: Office) -> set[str]:
 def _table_phrases() -> set[str]:
     raw: dict[str, Any] = raw_yaml(CATEGORIES_FILE)
     phrases = [str(k) for k in raw] + [
-        str(w) for entry in raw.values() for key in entry for w in entry[key]
+        str(w)
+        for entry in raw.values()
+        for key in entry
+        if isinstance(entry[key], list)
+        for w in entry[key]
     ]
     return {language.fold(p) for p in phrases}
 

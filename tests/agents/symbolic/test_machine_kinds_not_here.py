@@ -102,6 +102,14 @@ def test_a_kind_of_the_default_offices_machine_is_asked_about(text: str) -> None
     assert "Shall I use the" in frame.question
 
 
+def test_the_machine_is_named_as_it_was_asked_for() -> None:
+    """The office calls its microwave an oven too: "the pizza oven" is said back as asked,
+    never "pizza microwave", a machine nobody named."""
+    frame = _default("heat my lunch in the pizza oven")
+    assert frame.question is not None
+    assert frame.question.startswith("There's no pizza oven here, only the microwave.")
+
+
 @pytest.mark.parametrize(
     "text",
     [

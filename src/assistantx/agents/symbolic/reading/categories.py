@@ -31,6 +31,9 @@ class Category:
     names: frozenset[str]  # how a person says it ("drink", "hot drink")
     purposes: frozenset[str]  # "something to <verb> with" ("write")
     members: frozenset[str]  # the things of the kind ("coffee", "pen")
+    # whether each member is a kind of the thing named ("a flat white" is a coffee), not
+    # only a thing of the same sort ("tea" is a drink, no kind of coffee)
+    kinds: bool = False
 
 
 @functools.cache
@@ -45,6 +48,7 @@ def categories() -> tuple[Category, ...]:
             frozenset(language.fold(str(n)) for n in entry.get("names", ())),
             frozenset(language.fold(str(v)) for v in entry.get("purposes", ())),
             frozenset(language.fold(str(m)) for m in entry.get("members", ())),
+            bool(entry.get("kinds", False)),
         )
         for key, entry in raw.items()
     )
@@ -81,6 +85,13 @@ def office_choices(office: Office, category: Category) -> list[str]:
         maker = next((f for f in office.facilities if t.id in f.products), None)
         out.append(f"{synonym} from the {maker.name}" if maker is not None else synonym)
     return list(dict.fromkeys(out))
+
+
+def kinds_of(name: str) -> frozenset[str]:
+    """The kinds of a thing called ``name`` the table knows ("flat white", "latte" of
+    "coffee"): the members of the categories it names."""
+    said = language.fold(name).strip()
+    return frozenset(m for c in categories() if c.kinds and said in c.names for m in c.members)
 
 
 def which_question(choices: list[str]) -> str:

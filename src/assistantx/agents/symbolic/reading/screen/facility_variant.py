@@ -70,13 +70,16 @@ def facility_variant(terms: Terms, msg: Message, piece: Piece, requester: str) -
     if where is None:
         return None
     asked = msg.text[where[0] : where[1]]
+    # the machine as it was asked for ("pizza oven"), not by the office's name for it
+    named = span_of(msg, piece, piece.lexed.tokens[mention.start : mention.end])
+    machine = msg.text[named[0] : named[1]] if named is not None else place.name
     own = f"the {place.name}"
     offer = f"{msg.text[: where[0]]}{msg.text[where[1] :].lstrip()}"
     return Finding(
         "instead",
         piece,
-        f"a kind of machine the office does not have: {asked} {place.name}",
-        message=(f"There's no {asked} {place.name} here, only {own}. Shall I use {own} instead?"),
+        f"a kind of machine the office does not have: {asked} {machine}",
+        message=(f"There's no {asked} {machine} here, only {own}. Shall I use {own} instead?"),
         offer=offer,
     )
 

@@ -35,6 +35,7 @@ from assistantx.agents.symbolic.reading.screen.hope import hope
 from assistantx.agents.symbolic.reading.screen.impersonation import impersonation
 from assistantx.agents.symbolic.reading.screen.kept import several_kept
 from assistantx.agents.symbolic.reading.screen.kept_where import kept_where
+from assistantx.agents.symbolic.reading.screen.kind_of_product import kind_of_product
 from assistantx.agents.symbolic.reading.screen.narrative import narrative_fragment, told_subject
 from assistantx.agents.symbolic.reading.screen.need_to_know import need_to_know
 from assistantx.agents.symbolic.reading.screen.negation import negated
@@ -230,6 +231,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     # "one of Sunny's tools" where Sunny has a pump, a multitool and levers: which, asked
     ("which", several_of_theirs),
     ("unsupported", variant),
+    # "a flat white" where the machine makes coffee: "Shall I get you a coffee instead?"
+    ("instead", kind_of_product),
     # "fire my jug in the raku kiln" where the office has one plain kiln: asked, never run on
     # the office's one
     ("instead", facility_variant),
