@@ -109,3 +109,9 @@ def test_a_thing_of_the_same_sort_is_not_offered(text: str) -> None:
 def test_a_preference_beside_the_offices_own_name_gets_it() -> None:
     frame = _default().parse("cud u grab me a coffee, flat white if poss", "lin")
     assert [(t.kind, t.item) for t in frame.tasks] == [("produce", "coffee")]
+
+
+def test_a_kind_asked_of_the_machine_that_makes_the_thing_gets_it() -> None:
+    """Near-miss: "from the coffee machine" says it is the machine's coffee that is wanted."""
+    frame = _default().parse("grab me a flat white from the coffee machine", "lin")
+    assert [(t.kind, t.item) for t in frame.tasks] == [("produce", "coffee")]

@@ -90,6 +90,7 @@ def test_the_rules_in_priority_order() -> None:
         "which",  # one of several things kept for their owner ("Jürgen's curry from the fridge")
         "which",  # one of a colleague's several things by a word for a kind ("one of X's tools")
         "unsupported",  # a made thing in a variant not made here (asked: "instead"), or above it
+        "instead",  # a kind of a made thing the office names plainly ("a flat white"): asked
         "instead",  # a kind of machine the office lacks ("the raku kiln"): asked
         "unsupported",  # a service nothing here offers, before an outsider is asked about
         "unsupported",  # work no verb of the reader names ("polish my boots"; "sort out": asked)

@@ -16,7 +16,8 @@ a kind said before another thing's name ("the flat white envelope": what the env
 like), one said as someone's ("Wang's latte": theirs, not a drink to make), and a thing of
 the office's own whose name holds the words ("the green tea caddy" where the caddy is an
 item), and a kind said beside the office's own name for the thing ("a coffee, flat white if
-poss": the coffee asked for, as before). Only a kind of the thing itself is offered, never a
+poss": the coffee asked for, as before), or beside the machine that makes it ("a flat white
+from the coffee machine": its coffee, as before). Only a kind of the thing itself is offered, never a
 thing of the same sort ("a coffee" where the urn makes only tea stays declined).
 """
 
@@ -73,6 +74,14 @@ def _kind(terms: Terms, msg: Message, piece: Piece) -> _Kind | None:
     items_at = {m.start: m for m in mentions if m.kind == "item"}
     words = [t.word for t in tokens]
     named = {i for m in msg.lexed.mentions if m.kind == "item" for i in m.ids}
+    # "a flat white from the coffee machine": what that machine makes, asked of it by kind
+    named |= {
+        product
+        for m in msg.lexed.mentions
+        if m.kind == "facility"
+        for f in m.ids
+        for product in terms.office.facility(f).products
+    }
     for item_type, kinds in _kinds_made_here(terms):
         if item_type in named:
             continue  # "a coffee, flat white if poss": the office's own, a wish of which
