@@ -17,8 +17,9 @@ like), one said as someone's ("Wang's latte": theirs, not a drink to make), and 
 the office's own whose name holds the words ("the green tea caddy" where the caddy is an
 item), and a kind said beside the office's own name for the thing ("a coffee, flat white if
 poss": the coffee asked for, as before), or beside the machine that makes it ("a flat white
-from the coffee machine": its coffee, as before). Only a kind of the thing itself is offered, never a
-thing of the same sort ("a coffee" where the urn makes only tea stays declined).
+from the coffee machine": its coffee, as before). Only a kind of the thing itself is
+offered, never a thing of the same sort ("a coffee" where the urn makes only tea stays
+declined).
 """
 
 from __future__ import annotations
