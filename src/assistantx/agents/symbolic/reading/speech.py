@@ -862,6 +862,8 @@ class SpeechActs:
             return True  # "can barely see a thing": the speaker's state, told
         if w and subject_of_fault(w, 0):
             return True  # "drive in slot 4 has died": a fault told, context for the ask
+        if _own_one_does(w):
+            return True  # "mine just crackle": what the speaker's own one does, told
         if _adjective_subject_told(w):
             return True  # "free chlorine looked low on my kit": told, "free" is no command
         if returned_told(w) and self.question(words, asks=False) is None:
@@ -1450,16 +1452,40 @@ class SpeechActs:
 _VERB_OBJECT_OPENERS = english.words("object_starts") | frozenset({"me", "us", "it", "them"})
 
 
+# A possessive pronoun that stands for the speaker's or someone's thing ("mine just crackle")
+_OWN_ONES = frozenset({"mine", "ours", "yours", "hers", "theirs"})
+
+
+def _own_one_does(w: list[str]) -> bool:
+    """ "mine just crackle", "mine crackle too": a thing said by its owner's pronoun, then
+    (past one adverb) a plain verb that ends the clause or takes its object: what it does,
+    told (the reason beside a request), never the thing asked for."""
+    if len(w) < 2 or w[0] not in _OWN_ONES:
+        return False
+    n = 2 if len(w) > 2 and "ADV" in language.lemmas(w[1]) else 1
+    x = w[n] if n < len(w) else ""
+    return (
+        bool(x)
+        and x in language.verb_lemmas(x)
+        and x not in _MODALS | _AUX | _PLEASE  # "mine please": the own one asked for
+        and "AUX" not in language.lemmas(x)
+        and (n + 1 == len(w) or w[n + 1] in _VERB_OBJECT_OPENERS or w[n + 1] in ("too", "again"))
+    )
+
+
 def _plural_subjects_verb(w: list[str], n: int) -> bool:
     """Whether ``w[n]`` is a plain verb with its object after it, right after the plural
     noun that ends a subject opened by a determiner ("the new lights make the bay ...",
     "these drills make a lot ..."): a verb agreeing with it, told, not a command (which
     opens with its verb); "the standards team need ..." is a compound noun's head."""
     x, before = w[n], w[n - 1]
+    if n >= 3 and "ADV" in language.lemmas(before) and not language.is_plural_noun(before):
+        before = w[n - 2]  # "my headphones *just* crackle": an adverb before the verb
     return (
         n >= 2
-        and n + 1 < len(w)
-        and w[n + 1] in _VERB_OBJECT_OPENERS  # "make *the* bay": a verb and its object
+        # "make *the* bay": a verb and its object; or the verb ends the clause ("my
+        # headphones just crackle")
+        and (n + 1 == len(w) or w[n + 1] in _VERB_OBJECT_OPENERS)
         and w[0] in _SUBJECTS
         and x in language.verb_lemmas(x)
         and x not in _MODALS | _AUX
