@@ -46,6 +46,9 @@ _frame = frame_reader(_office, "dana")
         "get me Sam's key card so I can get into his email",
         "can you log in as Pat and send the rota",
         "use Pat's password to open the booking system",
+        # a second command after the first's recipient: the robot's own doing, still
+        "bring Pat the badge and log into her account",
+        "give Pat my badge then log into her email",
     ],
 )
 def test_getting_into_a_colleagues_account_is_declined(text: str) -> None:
@@ -60,6 +63,7 @@ def test_getting_into_a_colleagues_account_is_declined(text: str) -> None:
         ("bring me Pat's badge", "pat", "dana"),
         ("take my badge to Pat", "dana", "pat"),
         ("take my badge to Sam so he can get into his email", "dana", "sam"),
+        ("tell Pat to log into her account and take her my badge", "dana", "pat"),
     ],
 )
 def test_a_card_asked_for_plainly_is_read_as_before(text: str, owner: str, recipient: str) -> None:

@@ -31,6 +31,8 @@ _THEIRS = frozenset({"his", "her", "their"})
 _THEM = frozenset({"him", "her", "them"})
 # how far after whose it is the account noun may stand ("her *EDMS* account")
 _NOUN_SPAN = 3
+# what joins a second command to the first ("bring Wang the badge and log into her account")
+_JOINS = frozenset({"and", "then", "&"})
 
 
 def _acted_as(piece: Piece, requester: str) -> bool:
@@ -43,10 +45,16 @@ def _acted_as(piece: Piece, requester: str) -> bool:
         if m.kind != "person" or requester in m.ids:
             continue
         (theirs if m.possessive else named)[m.start] = m.end
+    clause = 0  # where the clause the verb is in begins
     for n in range(len(words)):
-        # "... so he can log into his email": the colleague's own doing
-        if set(words[:n]) & _SUBJECTS or any(start < n for start in named):
+        if words[n] in _JOINS:
+            clause = n + 1  # "bring Wang the stapler *and* log into her account": a new verb
+        # "... so he can log into his email": the colleague's own doing; "tell Pat to log
+        # into her account": Pat's, said in the same clause
+        if set(words[:n]) & _SUBJECTS:
             break
+        if any(clause <= start < n for start in named):
+            continue
         for verb in _AS:
             if starts_with(words, n, verb):
                 at = n + len(verb)
