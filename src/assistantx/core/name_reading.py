@@ -63,6 +63,18 @@ _PRESENCE = (
     frozenset(p.split()[0] for p in (*english.entries("here"), *english.entries("away")))
     | english.words("presence_question_words")
 ) - {"not"}
+# "hope so", "to be frank", "the stores are miles away": fixed phrases in which a name word is
+# the ordinary word (english.yaml), each as its words; the second only after another word of
+# its clause ("Miles away today" at the start may be Miles being away). "hope" itself is kept
+# here, never in the English data (as ``_CLAUSE_VERBS``), with the words that follow it there
+_IDIOMS = tuple(tuple(language.words(p)) for p in english.entries("name_idioms")) + tuple(
+    ("hope", *language.words(tail)) for tail in english.entries("hoped_idiom_tails")
+)
+_IDIOMS_INSIDE = tuple(tuple(language.words(p)) for p in english.entries("name_idioms_inside"))
+_IDIOM_KEEPERS = english.words("name_idiom_keepers")
+# "is Miles away today?", "when's Miles off?": a copula asking after someone, no distance
+_WH = english.words("wh_words")
+_ASKING_COPULAS = _PRESENCE_BE | _PRESENCE_BE_PLURAL | {"s"}
 
 
 @dataclass(frozen=True)
@@ -85,6 +97,9 @@ class NameSlot:
     declared_with_prev: bool = False
     prev_opens: bool = False  # the word before opens the sentence ("*is* tam in today?")
     after_next_is_name: bool = False  # the word after the next is a word of someone's name
+    # the word stands in a fixed phrase that makes it the ordinary word ("hope so", "miles
+    # away", "to be frank"), with no word before the phrase that makes it a person
+    idiom: bool = False
 
 
 class SlotWord(Protocol):
@@ -137,7 +152,66 @@ def slot_at(
         declared_with_prev=n > 0 and (words[n - 1].word, w.word) in with_article,
         prev_opens=n > 0 and words[n - 1].opens,
         after_next_is_name=after is not None and not after.opens and after.word in name_words,
+        idiom=in_idiom(words, n, name_words),
     )
+
+
+def in_idiom(words: Sequence[SlotWord], n: int, name_words: Container[str] = ()) -> bool:
+    """Whether the name word ``words[n]`` stands in one of the fixed phrases that make it the
+    ordinary word (english.yaml's ``name_idioms``: "hope so, thanks", "to be frank the
+    printer is useless", "the stores are miles away"), all of it within one clause (no
+    sentence end nor pause inside). A word before the phrase that makes a person ("tell Hope
+    you're well"), a name joined before it ("Tam and Miles away today"), or a copula asking
+    after someone ("is Miles away today?", "when's Miles off?") keeps the name's own
+    reading; so does a possessive ("Hope's so kind")."""
+    if words[n].possessive:
+        return False
+    for phrases, inside in ((_IDIOMS, False), (_IDIOMS_INSIDE, True)):
+        for phrase in phrases:
+            start = _phrase_start(words, n, phrase)
+            if start is None:
+                continue
+            if _idiom_kept_off(words, start, name_words, inside=inside):
+                continue
+            return True
+    return False
+
+
+def _phrase_start(words: Sequence[SlotWord], n: int, phrase: Sequence[str]) -> int | None:
+    """Where ``phrase`` starts if it stands over ``words[n]`` within one clause."""
+    for k, w in enumerate(phrase):
+        if w != words[n].word:
+            continue
+        start = n - k
+        span = words[start : start + len(phrase)]
+        if start < 0 or len(span) != len(phrase):
+            continue
+        if all(
+            t.word == p and (j == 0 or not (t.opens or t.after_pause))
+            for j, (t, p) in enumerate(zip(span, phrase, strict=True))
+        ):
+            return start
+    return None
+
+
+def _idiom_kept_off(
+    words: Sequence[SlotWord], start: int, name_words: Container[str], *, inside: bool
+) -> bool:
+    """Whether what stands before a fixed phrase starting at ``start`` keeps its name word a
+    person: a word that makes one, a name joined to it, a copula asking after someone; and
+    for a phrase read so only inside a clause, no word before it there at all."""
+    first = words[start]
+    if start == 0 or first.opens or first.after_pause:
+        return inside
+    prev = words[start - 1]
+    if prev.word in _IDIOM_KEEPERS:
+        return True
+    before = words[start - 2] if start >= 2 and not prev.opens else None
+    if prev.word in ("and", "or") and before is not None and before.word in name_words:
+        return True  # "Tam and Miles away today": both named
+    if prev.word in _ASKING_COPULAS:
+        return prev.opens or (before is not None and before.word in _WH)
+    return False
 
 
 def is_word_name(word: str) -> bool:
@@ -163,6 +237,8 @@ def read_name(slot: NameSlot) -> NameReading:
         return "word"  # "Drew a blank on the rota": the speaker's dropped "I", a past verb
     if not is_word_name(w) or (slot.declared_with_prev and not slot.opens):
         return "person"
+    if slot.idiom:
+        return "word"  # "hope so", "he's still miles away", "to be frank": the phrase's word
     if _spoken_to(slot):
         return "person"
     if _verb_slot(slot):

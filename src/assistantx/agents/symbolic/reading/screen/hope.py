@@ -59,8 +59,8 @@ def _hoped(terms: Terms, piece: Piece) -> bool:
         return False
     if _colleagues_possessive(piece, words[n]):
         return False  # "need a ruler. Hope's please": the colleague's, no verb
-    if n == 0 and words[n] in terms.lex.name_words:
-        return False  # the word opens the piece and is someone's name here
+    if n == 0 and words[n] in terms.lex.name_words and _read_as_name(piece, words[n]):
+        return False  # the word opens the piece and the lexicon read it as someone's name
     hoped = words[n + 1 :]
     if words[n] == _WISH and not set(hoped) & _THEIR_OWN:
         return False  # "I wish Hal would sign the form": who is to do the work, asked
@@ -79,6 +79,16 @@ def _colleagues_possessive(piece: Piece, word: str) -> bool:
         and m.end - m.start == 1
         and tokens[m.start].text[:1].isupper()
         and tokens[m.start].word + "s" == word
+        for m in piece.lexed.mentions
+    )
+
+
+def _read_as_name(piece: Piece, word: str) -> bool:
+    """Whether the lexicon read ``word`` in ``piece`` as a colleague's name ("Hope needs a
+    ruler"), not as the word of a fixed phrase ("Hope so, thanks": ``name_reading``)."""
+    tokens = piece.lexed.tokens
+    return any(
+        m.kind == "person" and any(t.word == word for t in tokens[m.start : m.end])
         for m in piece.lexed.mentions
     )
 
