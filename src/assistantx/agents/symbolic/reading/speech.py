@@ -1315,7 +1315,7 @@ class SpeechActs:
     def _service_subject(self, w: list[str]) -> bool:
         """ "courier leaves at 3", "post goes at 4", "van leaves at 3": a service's word or a
         facility's one-word name as its clause's subject."""
-        return service_noun_subject(w, self._subject_words, self.lex.items)
+        return service_noun_subject(w, self._subject_words, self.lex.items, self._named)
 
     def _for_me(self, w: list[str]) -> bool:
         """ "... I could borrow", "... lend me one", "... for me": the asker wants it."""
