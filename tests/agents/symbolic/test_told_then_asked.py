@@ -100,3 +100,66 @@ def test_an_ask_to_anyone_with_no_state_before_is_unchanged(
     text: str, expected: list[tuple[str, str, str | None, str]]
 ) -> None:
     assert tasks_of("default", text, "lee") == expected
+
+
+# -- fixer fix62c class 2: an ask to anyone, or after a told verb, run on with no stop --------
+@pytest.mark.parametrize(
+    ("text", "requester", "expected"),
+    [
+        ("my phone's on 3% anyone got a cable i can borrow", "lee", _CABLE),
+        ("my phone's flat anyone have a cable i can use", "lee", _CABLE),
+        ("my phone is dead any chance of a cable", "lee", _CABLE),
+        # the printer lacks paper: "some" is paper, as after a stop
+        (
+            "printer's out of paper anyone got some i can use",
+            "lee",
+            ("transfer", "paper", None, "lee"),
+        ),
+        # a told clause with a past verb, no copula
+        (
+            "my stapler broke can u bring me Wang's",
+            "zhang",
+            ("transfer", "stapler", "wang", "zhang"),
+        ),
+        ("my cable died could someone bring me a cable", "lee", _CABLE),
+    ],
+)
+def test_a_run_on_ask_after_a_told_clause_is_read(
+    text: str, requester: str, expected: tuple[str, str, str | None, str]
+) -> None:
+    assert tasks_of("default", text, requester) == [expected]
+
+
+def test_a_run_on_ask_after_where_the_speaker_is_is_read() -> None:
+    assert tasks_of("default", "im at my desk all day could someone bring me a coffee", "lee") == [
+        ("produce", "coffee", None, "lee")
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "my phone's on 3%",
+        "my stapler broke yesterday and Wang fixed it",
+        "Wang said anyone can borrow his stapler",
+    ],
+)
+def test_a_told_clause_with_no_ask_after_it_stays_told(text: str) -> None:
+    frame = parser("default").parse(text, "lee")
+    assert frame.tasks == [] and frame.question is None and frame.decline is not None, frame
+
+
+def test_an_ask_to_anyone_alone_is_read_as_before() -> None:
+    frame = parser("default").parse("anyone got a cable?", "lee")
+    assert frame.tasks == [] and frame.question is not None and "Shall I" in frame.question
+
+
+def test_an_ask_reported_after_said_is_not_the_speakers() -> None:
+    # the reported words are no request of the speaker's own: no task read
+    assert tasks_of("default", "Wang said can you bring him his stapler", "lee") == []
+
+
+def test_a_facility_lacking_a_thing_gives_no_it() -> None:
+    # "it" is the printer, never the paper it lacks
+    frame = parser("default").parse("the printer is out of paper, can you fix it", "lee")
+    assert frame.tasks == [], frame

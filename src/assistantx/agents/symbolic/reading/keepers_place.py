@@ -15,8 +15,14 @@ have. So, for a thing the frames read as that colleague's:
   thing of theirs that does not exist.
 
 A colleague who has one and keeps none: their own, as before ("a roll of tape from Tom's
-drawer"). The place words are English (``keeping_places``, ``closed_containers``,
-``place_words`` in english.yaml) and the words of the office's facility names.
+drawer").
+
+A thing the frames left to anyone, taken from the requester's own place ("bring Wang some paper
+from my desk", "take a pen from my drawer to Hu") or a colleague's where the frames did not
+make it theirs, is that person's own where they have one: the place says whose, and anyone's
+paper sent the robot to another colleague's. Where they have none it stays as read. The place
+words are English (``keeping_places``, ``closed_containers``, ``place_words`` in english.yaml)
+and the words of the office's facility names.
 """
 
 from __future__ import annotations
@@ -48,13 +54,20 @@ class KeepersPlace:
 
 
 def keepers_places(
-    office: Office, tokens: Sequence[Token], mentions: Sequence[Mention]
+    office: Office, tokens: Sequence[Token], mentions: Sequence[Mention], requester: str
 ) -> list[KeepersPlace]:
-    """The places "from <colleague>'s <place word>" the message says a thing comes from."""
+    """The places "from <colleague>'s <place word>" (or "from my <place word>", the
+    requester's) the message says a thing comes from."""
     names: set[str] | None = None  # the words of the facilities' names, read when needed
     found: list[KeepersPlace] = []
     for n, m in enumerate(mentions):
-        if m.kind != "person" or len(m.ids) != 1 or not m.possessive or m.start == 0:
+        if not m.possessive or m.start == 0:
+            continue
+        if m.kind == "person" and len(m.ids) == 1:
+            person = m.ids[0]
+        elif m.kind == "self" and tokens[m.start].word == "my":
+            person = requester
+        else:
             continue
         if tokens[m.start - 1].word not in _FROM:
             if not (m.start > 1 and tokens[m.start - 1].word == "of"):
@@ -63,7 +76,7 @@ def keepers_places(
                 continue
         after = mentions[n + 1] if n + 1 < len(mentions) else None
         if after is not None and after.kind == "facility" and after.start == m.end:
-            found.append(KeepersPlace(m.ids[0], after.ids[0] if len(after.ids) == 1 else None))
+            found.append(KeepersPlace(person, after.ids[0] if len(after.ids) == 1 else None))
             continue
         if m.end >= len(tokens):
             continue
@@ -72,7 +85,7 @@ def keepers_places(
         if _place_word(tokens[m.end].word, names):
             if after is not None and after.start == m.end and after.kind == "item":
                 continue  # "from Tom's box file": a thing of theirs, not a place
-            found.append(KeepersPlace(m.ids[0], None))
+            found.append(KeepersPlace(person, None))
     return found
 
 
@@ -86,13 +99,26 @@ def from_keepers_place(
     out: list[Task] = []
     for task in tasks:
         place = next((p for p in places if p.person == task.owner), None)
-        if task.kind != "transfer" or task.item is None or place is None:
+        item = task.item
+        if task.kind != "transfer" or item is None:
             out.append(task)
             continue
-        name = office.item_type(task.item).name
+        if place is None and task.owner is None:
+            # "bring Wang some paper from my desk": anyone's, from a place of someone who has
+            # one of their own (a place, not a facility named): theirs
+            place = next(
+                (p for p in places if p.facility is None and p.person in office.owners_of(item)),
+                None,
+            )
+            if place is not None:
+                task = task.model_copy(update={"owner": place.person})
+        if place is None:
+            out.append(task)
+            continue
+        name = office.item_type(item).name
         who = office.person(place.person).name
-        kept = _kept_by(office, place, task.item)
-        own = place.person in office.owners_of(task.item)
+        kept = _kept_by(office, place, item)
+        own = place.person in office.owners_of(item)
         if own and not kept:
             out.append(task)  # "a roll of tape from Tom's drawer": Tom's own
             continue
@@ -109,9 +135,7 @@ def from_keepers_place(
                 f"Where should I get the {name} from?"
             )
         facility = kept[0].id
-        owner = (
-            None if office.kept_owner(task.item, besides=task.recipient) == facility else facility
-        )
+        owner = None if office.kept_owner(item, besides=task.recipient) == facility else facility
         out.append(task.model_copy(update={"owner": owner}))
     return out, None
 

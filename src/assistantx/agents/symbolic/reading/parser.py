@@ -381,7 +381,7 @@ class InstructionParser:
                 return TaskFrame(requester=requester, question=unclear_source)
             frame = frame.model_copy(update={"tasks": tasks})
             # "get a tube from Priya's cabinet": the supply kept where Priya looks after it
-            places = keepers_places(self.office, whole.tokens, whole.mentions)
+            places = keepers_places(self.office, whole.tokens, whole.mentions, requester)
             tasks, unclear_place = from_keepers_place(self.office, frame.tasks, places)
             if unclear_place is not None:
                 return TaskFrame(requester=requester, question=unclear_place)

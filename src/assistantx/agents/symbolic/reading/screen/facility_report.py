@@ -33,6 +33,9 @@ _KEEPS = tuple(
 )
 _SAID_BACK = english.wording("said_back")
 REPAIR = "I can't repair it myself, so please tell whoever looks after it."
+# the context entry of a thing a facility is said to lack ("lacked:paper"): a later "some" or
+# "one" stands for it, never "it" ("the printer's out of paper, can you fix it")
+LACKED = "lacked:"
 
 
 def facility_report(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -89,7 +92,9 @@ def facility_report(terms: Terms, msg: Message, piece: Piece, requester: str) ->
             return None
         return _report(piece, f"the {name} is {' '.join(felt)}", fault=False)
     working = any(starts_with(state, 0, f) for f in _WORKING)
-    return _report(piece, f"the {name} is {' '.join(state)}", fault=not working)
+    # "the printer's out of paper, anyone got some": the thing it lacks is what "some" is
+    lacked = tuple(f"{LACKED}{item}" for item in terms.named(piece.lexed, "item"))
+    return _report(piece, f"the {name} is {' '.join(state)}", fault=not working, context=lacked)
 
 
 def _place_felt(terms: Terms, piece: Piece, subject: Mention) -> Finding | None:
@@ -124,8 +129,9 @@ def _doing(terms: Terms, piece: Piece, state: list[str], at: int) -> bool:
     )
 
 
-def _report(piece: Piece, said: str, *, fault: bool) -> Finding:
-    """The report, answered in words; a fault with what the assistant cannot do about it."""
+def _report(piece: Piece, said: str, *, fault: bool, context: tuple[str, ...] = ()) -> Finding:
+    """The report, answered in words; a fault with what the assistant cannot do about it
+    (``context``: the things it names, which a later "some" may stand for)."""
     said = " ".join(_SAID_BACK.get(w, w) for w in said.split())
     message = f"Thanks for letting me know {said}."
     return Finding(
@@ -133,4 +139,5 @@ def _report(piece: Piece, said: str, *, fault: bool) -> Finding:
         piece,
         f"a report: {said}",
         message=f"{message} {REPAIR}" if fault else message,
+        context=context,
     )

@@ -16,6 +16,7 @@ from assistantx.agents.symbolic.reading.screen.elided_possessive import (
     elided_item,
     things_named,
 )
+from assistantx.agents.symbolic.reading.screen.facility_report import LACKED
 from assistantx.agents.symbolic.reading.screen.kept import kept_thing
 from assistantx.agents.symbolic.reading.screen.own_one import own_ones
 from assistantx.agents.symbolic.reading.screen.pieces import Message
@@ -53,6 +54,9 @@ def rewrite(
     thanked = [c.removeprefix(THANKED) for c in context if c.startswith(THANKED)]
     context = [c for c in context if not c.startswith(THANKED)]
     context = [c.removeprefix(ONE_HELD) for c in context]
+    # what a facility was said to lack: a "some" may stand for it, never an "it"
+    lacked = [f"{c.removeprefix(LACKED)}|" for c in context if c.startswith(LACKED)]
+    context = [c for c in context if not c.startswith(LACKED)]
     text, found = purposes(terms, text, unmet=True)
     evidence += found
     text, found = kept_things(terms, msg, text)
@@ -78,6 +82,7 @@ def rewrite(
         for h in hints
         if h.kind == "condition" and h.item_type and h.value != "not wanted"
     ]
+    said += lacked
     chosen = [c.removeprefix(CHOSEN) for c in context if c.startswith(CHOSEN)]
     if chosen:
         text, found = chosen_kind(terms, text, chosen[-1])
