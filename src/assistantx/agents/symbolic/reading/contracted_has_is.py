@@ -13,11 +13,21 @@ participle that is also an adjective before a noun ("lost", "left", "taken", "go
 lost stapler") only when what follows is no noun of its own: a determiner or pronoun ("lost
 his tie", "taken the stapler"), an adverb of time or place ("left already"), a preposition,
 or the clause's end. A hyphened compound ("Wang's gone-off milk", "Wang's on-call phone") is
-one word describing the owned thing and stays a possessive."""
+one word describing the owned thing and stays a possessive.
+
+A thing of the office's "'s" before a verb's -ing form is "is" too, where the -ing word opens
+no name of the office ("my drill's eating batteries", "my recorder's playing up": the drill is
+eating them; "my drill's charging lead" names the lead, and stays the drill's) and no verb of
+its own follows a word or two on ("my drill's cutting disc is worn": the -ing word describes
+the subject's noun). Read as a possessive, the thing doing it was the thing asked about
+("Where is your drill?") and the request beside it was never read."""
 
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
+
+from assistantx.core import language
 
 # a participle no noun is: the "'s" before it is always "has"
 _HAS_ALWAYS = ("been",)
@@ -56,10 +66,26 @@ _CONTRACTED = re.compile(
 )
 
 
-def spelled_has_is(text: str) -> str:
+# a thing's "'s", then an -ing word and the words after it up to the clause's end
+_DOING = re.compile(
+    r"\b(?P<noun>[A-Za-z][\w-]*)['’]s\s+(?P<doing>[A-Za-z]+ing)\b(?![\w'’-])(?P<rest>[^,.;:!?]*)",
+    re.IGNORECASE,
+)
+# a verb of the subject's own after the -ing word: that word describes the subject's noun
+_OWN_VERB = frozenset({"is", "was", "are", "were", "has", "had", "isnt", "wasnt", "hasnt", "s"})
+
+
+def spelled_has_is(
+    text: str,
+    thing: Callable[[str], bool] = lambda phrase: False,
+    opens_name: Callable[[str], bool] = lambda phrase: False,
+) -> str:
     """``text`` with each noun's contracted "has"/"is" spelled out before a participle or a
     preposition ("Wang's gone" -> "Wang has gone", "Zhang's at" -> "Zhang is at"), where
-    the noun is its clause's subject."""
+    the noun is its clause's subject; and a thing's before a verb's -ing form ("my drill's
+    eating batteries" -> "my drill is eating batteries") where ``thing`` says the noun names
+    one of the office's things and ``opens_name`` says the -ing word and the words after it
+    open no name of the office."""
 
     def spelled(m: re.Match[str]) -> str:
         noun = m.group("noun")
@@ -69,4 +95,18 @@ def spelled_has_is(text: str) -> str:
             return f"{noun} is {m.group('is')}"
         return f"{noun} has {m.group('has') or m.group('has_verb')}"
 
-    return _CONTRACTED.sub(spelled, text)
+    def doing(m: re.Match[str]) -> str:
+        noun, ing, rest = m.group("noun"), m.group("doing"), m.group("rest")
+        after = re.findall(r"[\w'’]+", rest)[:3]
+        if (
+            noun.lower() in _NOT_A_NOUN
+            or not _SUBJECT_OPENING.search(text[: m.start()])
+            or not language.is_present_participle(ing.lower())
+            or not thing(noun)
+            or opens_name(" ".join([ing, *after[:2]]))
+            or any(re.sub(r"['’]", "", w).lower() in _OWN_VERB for w in after)
+        ):
+            return m.group(0)
+        return f"{noun} is {ing}{rest}"
+
+    return _DOING.sub(doing, _CONTRACTED.sub(spelled, text))

@@ -185,6 +185,23 @@ def _outsider_possessive(word: str) -> bool:
     return word.endswith("s") and word[:-1] in _OUTSIDER_NOUNS
 
 
+def _outsider_did(w: list[str]) -> bool:
+    """ "client just signed contract 12", "buyer settled lot 40", "customer paid invoice 7":
+    an outsider named by what they are, with its article dropped, then (after adverbs such as
+    "just") a past verb: what someone outside did, told as the reason beside a request; never
+    the verb's work asked of the office ("Who should sign your document?")."""
+    if len(w) < 2 or w[0] not in _OUTSIDER_NOUNS:
+        return False
+    n = 1
+    while n < len(w) - 1 and w[n] in _DONE_ADVERBS:
+        n += 1
+    return language.is_past_verb(w[n]) and not set(w[:n]) & _MODALS
+
+
+# the adverbs between an outsider's bare name and their past verb ("client *just* signed")
+_DONE_ADVERBS = frozenset({"just", "already", "finally", "now", "also", "only", "has", "have"})
+
+
 def _verb_like(word: str) -> bool:
     """Whether a word may open or be a clause's verb ("print", "took"), or is a grammar word
     ("can", "could"): not the noun of a bare subject."""
@@ -957,6 +974,7 @@ class SpeechActs:
             and not self._numbered_subject(w)
             and not self._bare_subject(w)
             and not self._thing_happened(w)
+            and not _outsider_did(w)
         ):
             return False
         # a subject may carry where its thing is ("the holly wreath on the reception desk
@@ -1049,12 +1067,16 @@ class SpeechActs:
         """ "Court 3 is locked", "bay 2's flooded": a noun and its number name a room or a
         thing (whether the office lists it or not), a subject like "the lab", though the noun
         alone may be a verb ("court", "room"); never a request's verb and its count ("print
-        3 copies", "need 2 pens")."""
+        3 copies", "need 2 pens"); "bidder 12 just settled lot 40" is one such subject too,
+        its adverb read past."""
+        k = 2  # "bidder 12 just settled lot 40": an adverb before the verb
+        while k < len(w) - 1 and w[k] in _DONE_ADVERBS:
+            k += 1
         return (
-            len(w) > 2
+            len(w) > k
             and w[0].isalpha()
             and any(c.isdigit() for c in w[1])
-            and (w[2] in _BARE_COPULAS or language.is_past_participle(w[2]))  # "3's locked"
+            and (w[k] in _BARE_COPULAS or language.is_past_participle(w[k]))  # "3's locked"
             and w[0] not in self.lex.cue_words
             and w[0] not in _MODALS | _AUX | _NEED | _WILLING | _PLEASE
         )

@@ -72,6 +72,7 @@ from assistantx.agents.symbolic.reading.hyphened_nouns import hyphened_nouns
 from assistantx.agents.symbolic.reading.idioms import signature_put
 from assistantx.agents.symbolic.reading.joined_gerunds import joined_gerunds
 from assistantx.agents.symbolic.reading.joining_signs import signs_as_and
+from assistantx.agents.symbolic.reading.kept_copies import kept_copies
 from assistantx.agents.symbolic.reading.lacked_purpose import lacked_purposes
 from assistantx.agents.symbolic.reading.lexicon import Lexicon
 from assistantx.agents.symbolic.reading.material_work import material_work
@@ -304,6 +305,12 @@ class Surface:
         named = ("item", "person", "place", "facility")
         return any(m.kind in named for m in self.lex.read(phrase).mentions)
 
+    def opens_name(self, phrase: str) -> bool:
+        """Whether ``phrase``'s first word opens a name of the office's things, people or
+        places ("charging lead", "printing paper")."""
+        named = ("item", "person", "place", "facility")
+        return any(m.kind in named and m.start == 0 for m in self.lex.read(phrase).mentions)
+
     def work_verb(self, word: str) -> bool:
         """A bare verb of the office's own services or of a colleague's work ("fix",
         "sign"), for a thing sent to someone to have it done."""
@@ -330,6 +337,22 @@ class Surface:
             supplied = any(s.type == type_id for f in self.office.facilities for s in f.supplies)
             return kind.kind in ("belonging", "product") and (kind.consumable or supplied)
         return False
+
+    def kept_name(self, phrase: str) -> int:
+        """How many words at ``phrase``'s start name a thing some facility keeps for anyone
+        (a cupboard's handbooks), no file and no stuff; 0 where they name none."""
+        raw = phrase.split()
+        for size in (3, 2, 1):
+            if len(raw) < size:
+                continue
+            words = [t.word for t in self.lex.tokens(" ".join(raw[:size]))]
+            type_id = self.lex.items.get(" ".join(words))
+            if type_id is None:
+                continue
+            kind = self.office.item_type(type_id)
+            kept = any(f.supply(type_id) is not None for f in self.office.facilities)
+            return size if kept and kind.physical and not kind.mass else 0
+        return 0
 
     def names_item(self, phrase: str) -> bool:
         """Whether ``phrase`` is one of the office's items the office can give and nothing
@@ -521,6 +544,9 @@ STEPS: tuple[Step, ...] = (
         "place_doers",
         lambda s, t, a: s.place_doers(t),
     ),
+    # a copy of a thing kept for anyone: one of those things
+    # e.g. "could I get a copy of the staff handbook", "2 copies of the timetable pls"
+    Step("kept_copies", lambda s, t, a: kept_copies(t, s.kept_name)),
     # copies made
     # e.g. "can you run off my report", "run a printout off my file"
     Step("run_off", lambda s, t, a: s.run_off(t)),
@@ -625,7 +651,10 @@ STEPS: tuple[Step, ...] = (
     ),
     # a subject's "has"/"is", no owner
     # e.g. "Wang's gone to lunch"
-    Step("spelled_has_is", lambda s, t, a: spelled_has_is(t)),
+    Step(
+        "spelled_has_is",
+        lambda s, t, a: spelled_has_is(t, lambda p: bool(s.item_types(p)), s.opens_name),
+    ),
     # the "so" starts the ask, as after a comma
     # e.g. "my stapler's broken so can I borrow Wang's"
     Step(

@@ -7,9 +7,12 @@ bare fragment is read as asking for what it names first, and here that is the oi
 Only where a word that names no item of the office comes before the preposition, and every
 item the piece names comes after one: "the stapler on my desk please" (the thing first),
 "paper in the printer" and "some twine from the potting shed" are read as before, as is any
-piece with request wording, a question mark or a verb."""
+piece with request wording, a question mark or a verb, or said "for me" (something done for
+the speaker is asked, whatever its verb: "bypass the lock on this phone for me")."""
 
 from __future__ import annotations
+
+import itertools
 
 from assistantx.agents.symbolic.reading.lexicon import Mention
 from assistantx.agents.symbolic.reading.screen.findings import Finding
@@ -28,6 +31,8 @@ _TOLD = frozenset({"item", "person", "word", "self", "pronoun"})
 _EVERYWHERE = frozenset({"everywhere"})
 # words that ask, however short the fragment ("stapler on my desk pls"), and haste
 _ASKING = english.words("asking_words") | frozenset({"quick", "quickly"})
+# whom a thing done for the speaker is for ("... for me"): a remark is for nobody
+_FOR_SPEAKER = frozenset({"me", "us"})
 # asides that join a second part to the errand before it ("on the way back")
 _ASIDES = tuple(tuple(p.split()) for p in english.entries("request_asides"))
 
@@ -41,6 +46,8 @@ def on_a_thing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Find
     words = content(piece.words)
     if not words or set(words) & _ASKING:
         return None
+    if any(a == "for" and b in _FOR_SPEAKER for a, b in itertools.pairwise(words)):
+        return None  # "bypass the lock on this phone for me": done for the speaker, asked
     tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
     items = [m for m in mentions if m.kind in ("item", "cue")]
     if not items:
