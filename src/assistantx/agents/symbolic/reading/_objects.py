@@ -110,6 +110,9 @@ def modifiers(
         ):
             in_purpose = True  # "... because there's no money for new stopwatches": context
             continue
+        if m.kind == "word" and head_seen and _use_gerund(tokens, mentions, n):
+            in_purpose = True  # "tissue paper for packing a veil": the veil is its use
+            continue
         if asked and _object_word(tokens, m):
             head_seen = True  # "I need a copy for the file": the copy is what is asked for
             continue
@@ -131,6 +134,23 @@ def modifiers(
         else:
             head_seen = True
     return out
+
+
+def _use_gerund(tokens: Sequence[Token], mentions: Sequence[Mention], n: int) -> bool:
+    """Whether mention ``n`` is "for" before a doing that is no task of the office's ("for
+    packing a veil", "for wrapping the gifts"), as "to pack a veil" is: what the thing asked
+    for is used on; a task's own gerund ("for printing") is read as before."""
+    m = mentions[n]
+    if m.ids[0] != "for" or n + 1 >= len(mentions):
+        return False
+    nxt = mentions[n + 1]
+    word = tokens[nxt.start].word if nxt.start < len(tokens) else ""
+    return (
+        nxt.kind == "word"
+        and nxt.start == m.end
+        and word.endswith("ing")
+        and language.is_present_participle(word)
+    )
 
 
 # The words that open a second thing after a purpose infinitive ("..., and *a* pen")

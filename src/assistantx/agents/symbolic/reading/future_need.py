@@ -46,7 +46,22 @@ def _purpose_opens(words: list[str], n: int) -> bool:
         return True
     # a verb's -ing form right after "for" is a doing, never a time ("for tonight" is kept
     # apart by the caller; no time word is a verb's -ing form)
-    return after.endswith("ing") and language.is_present_participle(after)
+    if after.endswith("ing") and language.is_present_participle(after):
+        return True
+    # a bare noun with a time after it ("for fieldwork tomorrow", "for class on Friday"):
+    # an occasion and its time, never a span ("for an hour") nor a time itself
+    return _bare_occasion(words, n + 1)
+
+
+def _bare_occasion(words: list[str], at: int) -> bool:
+    """Whether ``words[at]`` is a noun, no time or span word, right before a later time."""
+    noun = words[at]
+    if noun in _SPAN_WORDS or any(p[0] == noun for p in _LATER) or not language.is_noun(noun):
+        return False
+    rest = words[at + 1 :]
+    if rest[:1] == ["on"] and rest[1:2] and language.is_weekday(rest[1]):
+        return True
+    return any(tuple(rest[: len(p)]) == p for p in _LATER)
 
 
 def _has(words: list[str], phrases: tuple[tuple[str, ...], ...]) -> bool:

@@ -54,6 +54,7 @@ from __future__ import annotations
 
 import copy
 import dataclasses
+import functools
 import re
 import threading
 import weakref
@@ -275,7 +276,7 @@ class InstructionParser:
         # "... before I sign off tonight, can you sort it?": when, not a signing asked for
         # (after the screen, which reads "before he notices" as taking behind one's back)
         asked = without_time_clauses(
-            request.text, self.screen.terms.is_person_word, self._task_word
+            request.text, self.screen.terms.is_person_word, self._task_or_machine_word
         )
         frame = self._frame(
             spoken.msg.lexed, asked, requester, sent_out, to_self, destination, any_owner
@@ -322,6 +323,15 @@ class InstructionParser:
             # "Shall I shred your document for you?"
             screened.confirm = True
         return screened
+
+    def _task_or_machine_word(self, word: str) -> bool:
+        """A task word, or the head of a machine's name: "before I go near the grinder" says
+        when, never the grinder's work asked for."""
+        return self._task_word(word) or word in self._machine_heads
+
+    @functools.cached_property
+    def _machine_heads(self) -> frozenset[str]:
+        return frozenset(phrase.split()[-1] for phrase in self.lex.facilities if phrase)
 
     def _task_word(self, word: str) -> bool:
         """Whether ``word`` is one of the office's task words or a form of one ("prints")."""

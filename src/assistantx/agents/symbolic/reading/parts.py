@@ -48,7 +48,7 @@ from assistantx.agents.symbolic.reading.unread_compounds import (
     unread_compound,
     unread_sent_thing,
 )
-from assistantx.core import language
+from assistantx.core import english, language
 from assistantx.core.office import Facility, Office
 from assistantx.core.task_schema import TaskFrame, operation_of
 from assistantx.core.wording import ways_out
@@ -133,7 +133,24 @@ def _unnamed(office: Office, readings: Readings, frame: TaskFrame) -> str | None
     )
     if said is None or original_of_copy(said, frame.tasks):
         return None
+    if _portion_of_the_asked(readings, said, frame):
+        return None
     return None if _made_here(office, said, frame) else said
+
+
+# the portions a thing is asked for in ("a pair", "a couple"), English, not the office's
+_PORTIONS = english.words("portion_words")
+
+
+def _portion_of_the_asked(readings: Readings, phrase: str, frame: TaskFrame) -> bool:
+    """Whether ``phrase`` is only a portion ("a pair", "a couple") of the one thing the
+    message names and the frame already carries: "I need safety glasses. Can you find me a
+    pair?" asks for the glasses once, never for a "pair" of something unsaid."""
+    said = phrase.lower().split()
+    if not said or said[-1] not in _PORTIONS or len(said) > 2:
+        return False
+    named = {i for m in readings.mentions if m.kind == "item" for i in m.ids}
+    return len(named) == 1 and all(t.item in named for t in frame.tasks) and bool(frame.tasks)
 
 
 def _made_here(office: Office, phrase: str, frame: TaskFrame) -> bool:
