@@ -58,6 +58,9 @@ club = ob.parsed(_raw_club)
         "Mei has hurt her ankle in the pool hall. Can you take her an ice pack?",
         "Mei has twisted her knee, bring her an ice pack please",
         "Mei has cut her hand, take her my towel",
+        # what she has is no thing of the office: what she is busy with, not a having
+        "Mei has a swimming lesson soon. Can you take her an ice pack?",
+        "Mei has a flat tyre in the car park, take her my towel",
     ],
 )
 def test_one_said_to_have_done_something_is_whom_her_means(text: str) -> None:
@@ -77,6 +80,8 @@ def test_one_said_to_have_done_something_is_whom_her_means(text: str) -> None:
         # the one said to have the thing is where it comes from, never "her"
         "Mei has hurt her ankle. Rui has a spare towel, take it to her",
         "Mei has hurt her ankle. Rui has got a towel, bring it to her",
+        "Mei has hurt her ankle. Rui has a spare one, take it to her",
+        "Mei has hurt her ankle. Rui has a cold pack, bring it to her",
     ],
 )
 def test_one_said_to_have_a_thing_is_still_its_holder(text: str) -> None:

@@ -185,6 +185,17 @@ def _item_words(office: Office) -> frozenset[str]:
     return frozenset(found)
 
 
+def _item_heads(office: Office) -> frozenset[str]:
+    """The last word of each name of the office's items, singular and plural."""
+    found = set()
+    for t in office.item_types:
+        for name in (t.name, *t.synonyms):
+            key = language.fold(name).split()
+            if key:
+                found |= {key[-1], language.plural(key[-1])}
+    return frozenset(found)
+
+
 def _name_words(office: Office) -> frozenset[str]:
     return frozenset(language.fold(w) for p in office.people for w in name_parts.calling_words(p))
 
@@ -209,6 +220,7 @@ class _OfficeWords:
 
     __slots__ = (
         "family",
+        "item_heads",
         "items",
         "name_words",
         "names_by_first",
@@ -224,6 +236,9 @@ class _OfficeWords:
         for key, people in _names(office):
             self.names_by_first.setdefault(key[0], []).append((key, people))
         self.items = _item_words(office)
+        # the last words of every name of a thing ("knife" of "craft knife"): what a
+        # colleague is said to have is one of the office's things ("Olive has a craft knife")
+        self.item_heads = self.items | _item_heads(office)
         self.name_words = _name_words(office)
         # "to the curator" (of "Curator Moreau"): a one-word rank is a role title, named in
         # lower case too, as the reader reads it
@@ -594,7 +609,7 @@ def _roles_in(office_words: _OfficeWords, text: str, requester: str) -> frozense
             for m in mentions
             if not (m.possessive and m.start > n)
             and _before(words, m.start) != "from"
-            and not _holder(words, m.end)
+            and not _holder(words, m.end, office_words.item_heads)
             and not _owner_carried(folded, m, n, office_words.items)
             for person in m.people
         } - {requester}
@@ -726,11 +741,14 @@ _NONE = frozenset({"no", "none", "nothing", "not", "nt"})
 _GOT = frozenset({"got", "gotten"})
 
 
-def _holder(words: list[_Word], end: int) -> bool:
+def _holder(words: list[_Word], end: int, things: frozenset[str]) -> bool:
     """Whether the name ending at ``end`` is said to have something ("Rhys has a spare one,
     bring it to her"): the one it comes from, never the "her" it goes to. One said to have
     none ("Zoë has no headset, take her mine") lacks it: whom it goes to; one who "has been"
-    somewhere holds nothing by that."""
+    somewhere holds nothing by that, nor one who has what is no thing of the office ("Wang
+    has a meeting soon, take her my stapler", "Jae-won has a flat Polo in lane B, take him
+    the jump pack": what they are busy with; ``things``: the words that end the office's
+    names of things)."""
     if end >= len(words) or words[end].folded not in _HAS:
         return False
     after = words[end + 1].folded if end + 1 < len(words) else ""
@@ -738,7 +756,20 @@ def _holder(words: list[_Word], end: int) -> bool:
     # "be", a state she was in, no having; so is any perfect ("Mei has hurt her ankle, take
     # her an ice pack": what happened to her), but "has got" is a having
     perfect = after not in _GOT and language.is_past_participle(after)
-    return after not in _NONE and after != "been" and not perfect
+    if after in _NONE or after == "been" or perfect:
+        return False
+    had: list[str] = []
+    for w in words[end + 1 : end + 1 + _HAD_SPAN]:
+        if w.after_pause and had:
+            break
+        had.append(w.folded)
+    return bool(set(had) & (things | _HAD_STAND_INS))
+
+
+# How far after "has" what is had is looked for, and the words that stand for a thing had
+# ("Rhys has a spare one", "Ann has some", "Hal has it")
+_HAD_SPAN = 5
+_HAD_STAND_INS = frozenset({"one", "ones", "some", "it", "them", "spare", "spares", "any"})
 
 
 def _just_a_name(office: Office, text: str) -> frozenset[str]:

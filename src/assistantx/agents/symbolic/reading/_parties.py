@@ -169,8 +169,19 @@ class PersonSite:
     @property
     def at_place(self) -> bool:
         """ "Wang's desk": the person's place, not something they own."""
+        return self.possessive and bool(self._place_word())
+
+    def _place_word(self) -> str:
+        """The place word right after the possessive: a plain word ("desk"), or one the
+        office also names a place by ("Mercy's bench" where a workstation is the "Checking
+        bench"): said after a colleague's possessive it is their place all the same."""
         f = self.following
-        return self.possessive and f is not None and f.kind == "word" and f.ids[0] in PLACE_WORDS
+        if f is None:
+            return ""
+        if f.kind == "word" and f.ids[0] in PLACE_WORDS:
+            return f.ids[0]
+        said = f.text.lower()
+        return said if f.kind == "place" and said in PLACE_WORDS else ""
 
     @property
     def work(self) -> Mention | None:
@@ -184,7 +195,7 @@ class PersonSite:
     @property
     def place(self) -> str:
         """The place word after a possessive ("desk" in "Wang's desk"), else ""."""
-        return self.following.ids[0] if self.at_place and self.following is not None else ""
+        return self._place_word() if self.possessive else ""
 
 
 Slot = Literal["recipient", "returned", "source", "actor", "bare", "owner", "context", "occasion"]

@@ -264,6 +264,9 @@ _MANNER = english.words("manner_openers")
 _WISHED_SUBJECT_DETERMINERS = frozenset({"the", "this", "that", "our", "these", "those"})
 _UNNAMED_DOERS = english.words("unnamed_doers")
 _WISH_OPENERS = tuple(tuple(p.split()) for p in english.entries("wish_openers"))
+# "I'd love a ... someday": the liking verbs of a wish, and the times that put it off for good
+_LIKING = frozenset({"love", "like", "fancy"})
+_SOMEDAY = tuple(tuple(p.split()) for p in english.entries("someday_times"))
 _FOR_SPEAKER = frozenset({"i", "me", "my", "mine", "id", "im", "ive"})
 _SELF_OFFERS = english.words("self_offers")  # "I'll get it myself": the requester's own plan
 _NOTE_OPENERS = tuple(
@@ -674,6 +677,8 @@ class SpeechActs:
         the place, asking nobody for anything (no person named, nothing for the speaker,
         nobody addressed); "if Hal could sign my form" is a request, read as one."""
         w = content(words)
+        if self._someday_machine(w):
+            return True  # "I'd love a proper espresso machine in here someday"
         opener = next((o for o in _WISH_OPENERS if _starts(w, o)), None) or _hedged(w)
         if opener is None:
             return False
@@ -694,6 +699,20 @@ class SpeechActs:
         first = min(mentions, key=lambda m: m.start)
         before = {t.word for t in tokens[: first.start]}
         return first.kind == "facility" and before <= _WISHED_SUBJECT_DETERMINERS
+
+    def _someday_machine(self, w: list[str]) -> bool:
+        """ "I'd love a proper espresso machine in here someday", "would like a microwave up
+        here one day": a machine the speaker would like the place to have, some time: a
+        wish about the place, never the machine's product asked for now."""
+        if not (set(w[:3]) & _LIKING) or not any(
+            tuple(w[n : n + len(p)]) == p for n in range(len(w)) for p in _SOMEDAY
+        ):
+            return False
+        mentions = self.lex.scan(self.lex.tokens(" ".join(w)))
+        # "a coffee from the coffee machine at some point": the coffee is asked, later
+        return any(m.kind == "facility" for m in mentions) and not any(
+            m.kind in ("person", "item") for m in mentions
+        )
 
     def thanks(self, words: list[str]) -> Act | None:
         w = content([x for x in words if x not in ("please", "pls", "plz", "kindly")])
