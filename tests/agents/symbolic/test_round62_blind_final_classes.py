@@ -102,3 +102,46 @@ def test_a_drink_wished_for_is_still_made(text: str) -> None:
     """Near-miss: the machine's product asked for, later or not, is made."""
     frame = _parser("default").parse(text, "liu")
     assert [(t.kind, t.item) for t in frame.tasks] == [("produce", "coffee")]
+
+
+@functools.cache
+def _model_shop() -> InstructionParser:
+    """An architects' model shop: drawings to stamp, also called a "planning set" (a name
+    whose last word is also a past verb), and the registration stamp that seals them."""
+    people = (
+        ob.person("sam", "Sam Okonkwo", "drawings"),
+        ob.person("fern", "Fern Wood", "drawings", "stamp"),
+    )
+    raw = ob.office_file(
+        "model shop",
+        people,
+        rooms=[ob.room("front_desk", "Front desk", 4.0, 20.5)],
+        item_types=[
+            ob.item(
+                "drawings",
+                "drawing set",
+                "personal",
+                synonyms=["planning set", "drawings"],
+                signable=True,
+            ),
+            ob.item("stamp", "registration stamp", synonyms=["stamp"], seals=True),
+        ],
+        operations=[],
+        facilities=[],
+        home="front_desk",
+    )
+    return InstructionParser(parse_office(raw, raw["name"]))
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "My planning set needs the registration stamp before it goes out.",
+        "my planning set needs stamping",
+    ],
+)
+def test_a_things_name_ending_in_a_past_verb_is_no_event(text: str) -> None:
+    """ "set" ends the thing's name here, no past verb: the stamp is asked for (it was read
+    as what had happened to the speaker's own thing, and nothing was done)."""
+    frame = _model_shop().parse(text, "sam")
+    assert [(t.kind, t.item, t.owner) for t in frame.tasks] == [("seal", "drawings", "sam")]

@@ -11,6 +11,8 @@ it that points back to it ("..., can I have a new one") is read as before."""
 
 from __future__ import annotations
 
+from collections.abc import Container
+
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.purpose import POINTERS
@@ -34,7 +36,7 @@ def past_event(terms: Terms, msg: Message, piece: Piece, requester: str) -> Find
     if acts.need or acts.wish or acts.condition or acts.note is not None:
         return None
     words = content(piece.words)
-    verb = _verb_at(words)
+    verb = _verb_at(words, terms.lex.items)
     if verb is None or not _past(words, verb):
         return None
     if not _names_a_service(terms, piece):
@@ -64,8 +66,10 @@ def _asks(piece: Piece) -> bool:
     return piece.asks or acts.request or acts.imperative or acts.need
 
 
-def _verb_at(words: list[str]) -> int | None:
-    """Where the verb after the speaker's own thing is ("mine *went*", "my old one *got*")."""
+def _verb_at(words: list[str], items: Container[str]) -> int | None:
+    """Where the verb after the speaker's own thing is ("mine *went*", "my old one *got*");
+    a word that ends a name of the office's things is no verb ("my planning *set* needs
+    ...", where "planning set" names the office's drawings)."""
     if not words:
         return None
     if words[0] in _OWN:
@@ -73,6 +77,8 @@ def _verb_at(words: list[str]) -> int | None:
     if words[0] not in _OWN_OPENERS:
         return None
     for k in range(2, min(len(words), _REACH + 1)):
+        if any(" ".join(words[j : k + 1]) in items for j in range(1, k)):
+            continue  # "my planning set": the thing's own name
         if _past(words, k):
             return k
         if words[k] in _MODALS or language.is_finite_verb(words[k]):
