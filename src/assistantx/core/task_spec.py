@@ -154,6 +154,13 @@ def check_base(base: BaseInstruction, office: Office) -> None:
                 raise ValueError(f"{part.kind} needs {field!r}")
         if part.kind == "fetch":
             assert part.item is not None
+            if part.to is not None:
+                # a fetch brings the thing to the requester; read silently, "to" was dropped
+                # and the goal had the requester holding it
+                raise ValueError(
+                    "fetch brings the item to the requester; 'to' is not read (a thing "
+                    "fetched for someone else is not a fetch part)"
+                )
             if office.item_type(part.item).kind not in ("belonging", "personal"):
                 raise ValueError("fetch is for physical items")
             # "mine is leaking": asking for one of a kind you own is asking for someone else's

@@ -111,6 +111,24 @@ def test_bad_base_instruction_is_a_clear_error(office: Office, tmp_path: Path) -
         load_base_instructions(bad, office)
 
 
+def test_a_recipient_on_a_fetch_part_is_refused_not_dropped(office: Office, tmp_path: Path) -> None:
+    """A blind writer's "bring Kwame a pair of gloves" written as a fetch with ``to:`` had its
+    recipient dropped silently (the goal had the requester holding the gloves)."""
+    bad = tmp_path / "base.yaml"
+    bad.write_text(
+        "instructions:\n- id: x\n  requester: lee\n  text: bring Wang a stapler\n"
+        "  parts: [{kind: fetch, item: stapler, to: wang}]\n"
+    )
+    with pytest.raises(DatasetError, match="fetch brings the item to the requester"):
+        load_base_instructions(bad, office)
+    # the requester's own fetch, with no recipient, is read as before
+    bad.write_text(
+        "instructions:\n- id: x\n  requester: lee\n  text: bring me a stapler\n"
+        "  parts: [{kind: fetch, item: stapler}]\n"
+    )
+    assert [b.id for b in load_base_instructions(bad, office)] == ["x"]
+
+
 def test_bad_task_line_names_the_line(office: Office, tmp_path: Path) -> None:
     good = (DATASET / "tasks.jsonl").read_text().splitlines()[0]
     file = tmp_path / "tasks.jsonl"
