@@ -87,9 +87,11 @@ def office_choices(office: Office, category: Category) -> list[str]:
     return list(dict.fromkeys(out))
 
 
+@functools.cache
 def kinds_of(name: str) -> frozenset[str]:
     """The kinds of a thing called ``name`` the table knows ("flat white", "latte" of
-    "coffee"): the members of the categories it names."""
+    "coffee"): the members of the categories it names. Remembered: the screen asks it of
+    every name of every made thing, at every request piece."""
     said = language.fold(name).strip()
     return frozenset(m for c in categories() if c.kinds and said in c.names for m in c.members)
 
