@@ -1399,8 +1399,14 @@ class Lexicon:
         if tokens[i].word not in self.operation_words or i == 0 or tokens[i].opens:
             return False
         k = i - 1
-        while k > 0 and i - k <= 2 and self._modifier_noun(tokens, k):
-            k -= 1  # "Gwen's *fitness* test results": a noun of the same phrase before it
+        while (
+            k > 0
+            and i - k <= 2
+            and (self._modifier_noun(tokens, k) or self._describing_word(tokens, k))
+        ):
+            # "Gwen's *fitness* test results", "for a *massive* print run": a noun or a
+            # describing word of the same phrase before it
+            k -= 1
         before = tokens[k]
         if before.word not in _MODIFIER_DETERMINERS and not before.possessive:
             return False
@@ -1456,6 +1462,18 @@ class Lexicon:
             return False  # "stick my jump pack on charge": where it goes, the work asked
         thing = tokens[k - 1]
         return not thing.opens and thing.word in self.item_heads
+
+    def _describing_word(self, tokens: Sequence[Token], k: int) -> bool:
+        """A plain adjective inside a noun phrase ("a massive print run"): in lower case, no
+        word of the office, no function word and no service's word."""
+        t = tokens[k]
+        if t.opens or t.after_pause or t.possessive or not t.text.isalpha():
+            return False
+        if not t.text[:1].islower() or t.corrected or t.word in COMMON or self._known(t.word):
+            return False
+        if t.word in self.operation_words or t.word in self.cue_words:
+            return False
+        return "ADJ" in language.lemmas(t.word)
 
     def _modifier_noun(self, tokens: Sequence[Token], k: int) -> bool:
         """A plain noun inside a noun phrase: in lower case, no word of the office, no

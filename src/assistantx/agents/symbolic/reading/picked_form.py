@@ -1,7 +1,8 @@
 """A form said after a paper or a file picks which of the two is meant: "I need Wang's file,
 the paper one" asks for Wang's paper document, "Wang's document, the pdf one" for Wang's
 electronic file ("the hard copy", "the printed one", "the digital copy", "the electronic
-one" alike). The office keeps both forms of a colleague's paper as two things of its own (its
+one" alike), also as a sentence of its own ("can you get me Jie's report? the pdf one"). The
+office keeps both forms of a colleague's paper as two things of its own (its
 signable paper and its electronic file), so the form decides the errand: a hand-over or a
 file sent. Before, "the paper one" named the office's blank paper (fetched as a second thing)
 and "the pdf one" a second file with nobody to pass it to.
@@ -22,8 +23,12 @@ from assistantx.core.office import Office
 
 _ELECTRONIC = english.words("electronic_formats") | english.words("electronic_picks")
 _PAPER = english.words("paper_picks")
-# the pause before the pick: a comma, a dash, a colon; "the" or "a" opens it
-_PAUSE = r"\s*(?:[,;:]|\s[-–—])\s*(?:i\s+mean\s+)?(?:the|a|an)\s+"
+# the pause before the pick: a comma, a dash, a colon, or the end of a sentence ("Jie's
+# report? the pdf one": the next sentence only picks); "the" or "a" opens it
+_PAUSE = r"(?P<pause>\s*(?:[,;:.?!]+|\s[-–—]))\s*(?:i\s+mean\s+)?(?:the|a|an)\s+"
+# a pick said as a sentence of its own ends there, polite words aside ("the pdf one pls");
+# "print my report. the pdf one is on the drive" tells where the file is, no pick
+_SENTENCE_ENDS = re.compile(r"\s*(?:[\w']+\s*)?(?:[.!?]|$)")
 # a polite word may come between the head and the pause ("Wang's contract please, the pdf one")
 _POLITE = english.words("polite")
 
@@ -69,6 +74,11 @@ class PickedForm:
             return text
 
         def picked(match: re.Match[str]) -> str:
+            if any(c in match.group("pause") for c in ".?!"):
+                rest = _SENTENCE_ENDS.match(text, match.end())
+                closing = rest.group(0).strip(" .!?") if rest else None
+                if closing is None or (closing and closing.lower() not in _POLITE):
+                    return match.group(0)
             form = match.group("form").lower()
             name = self._names["paper" if form in _PAPER else "file"]
             return name + match.group("polite")

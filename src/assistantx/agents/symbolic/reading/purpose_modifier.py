@@ -11,6 +11,12 @@ Only the words of the office's own services and of its colleagues' work ("sign",
 take"); never a service's word that ends the phrase ("for signature", "for the print": the
 service named, as before), one before a word that is no noun ("for signature on my form",
 "for copying today"), nor one that belongs to a name of the office ("for the print room").
+
+Describing words may stand between the determiner and the modifier ("for the big print run",
+"for a massive copy job"): up to two words that can only be read as adjectives here (never a
+service's word, never a noun's only reading), after a determiner, are kept and the modifier is
+left out as before ("for the big run"). Without a determiner no such word is skipped: "for Wang
+print my file" keeps its command.
 """
 
 from __future__ import annotations
@@ -28,6 +34,12 @@ _PHRASE = re.compile(
     rf"\bfor\s+(?P<det>(?:{_DETERMINERS})\s+)?(?P<modifier>[a-z]+)\s+(?P<noun>[a-z]+)\b",
     re.IGNORECASE,
 )
+# "for the big print run": a determiner, then describing words before the modifier
+_DESCRIBED = re.compile(
+    rf"\bfor\s+(?P<det>(?:{_DETERMINERS})\s+)(?P<rest>[a-z]+(?:\s+[a-z]+){{2,3}})\b",
+    re.IGNORECASE,
+)
+_MOST_DESCRIBING = 2
 # words after the modifier that are no noun it modifies ("for the signature *please*")
 _NOT_NOUNS = NOT_NOUNS | english.words("request_markers")
 
@@ -51,4 +63,29 @@ def without_purpose_modifier(
             return match.group(0)
         return f"for {match.group('det') or ''}{match.group('noun')}"
 
-    return _PHRASE.sub(plain, text)
+    def described(match: re.Match[str]) -> str:
+        words = match.group("rest").split()
+        for n in range(1, min(_MOST_DESCRIBING, len(words) - 2) + 1):
+            if not all(_describing(w, service_words) for w in words[:n]):
+                break
+            modifier, noun = words[n].lower(), words[n + 1].lower()
+            if modifier.endswith("ing") or modifier not in service_words:
+                continue
+            if noun in _NOT_NOUNS or "NOUN" not in language.lemmas(noun):
+                continue
+            said = f"{modifier} {noun}"
+            if any(said in p or p == modifier for p in office_phrases):
+                continue
+            kept = [*words[:n], *words[n + 1 :]]
+            return f"for {match.group('det')}{' '.join(kept)}"
+        return match.group(0)
+
+    return _DESCRIBED.sub(described, _PHRASE.sub(plain, text))
+
+
+def _describing(word: str, service_words: Collection[str]) -> bool:
+    """A word read only as describing the noun after it: an adjective, never a service's
+    word, and never a word that is only a noun or a verb ("for the team print run": the
+    team's run is left as said)."""
+    lemmas = language.lemmas(word.lower())
+    return word.lower() not in service_words and "ADJ" in lemmas

@@ -741,8 +741,11 @@ class SpeechActs:
 
     def _done_for_me(self, w: list[str]) -> bool:
         """ "... for fetching the clipboard": a task word as a gerund after "for", with no
-        request wording: an act someone did, praised, not one asked for."""
+        request wording: an act someone did, praised, not one asked for. A need said ("Gao
+        needs some paper for printing") is what the thing is wanted for, never praise."""
         if self._imperative(w) or set(w) & _WILLING or (w[:1] and w[0] in _MODALS):
+            return False
+        if set(w) & (_NEED | {"needed"}):
             return False
         return any(
             a == "for"

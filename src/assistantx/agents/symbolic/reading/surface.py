@@ -45,6 +45,7 @@ from assistantx.agents.symbolic.reading.booked_means import booked_means, send_o
 from assistantx.agents.symbolic.reading.carrying_particles import carrying_particles
 from assistantx.agents.symbolic.reading.caused_reason import caused_then_told
 from assistantx.agents.symbolic.reading.chat_copula import spelled_are
+from assistantx.agents.symbolic.reading.chat_shorthand import spelled_shorthand
 from assistantx.agents.symbolic.reading.cleft_need import cleft_needs
 from assistantx.agents.symbolic.reading.consequence_boundary import consequence_boundaries
 from assistantx.agents.symbolic.reading.contracted_has_is import spelled_has_is
@@ -553,6 +554,9 @@ STEPS: tuple[Step, ...] = (
     # the tool's work said as the office's verb ("notarised" of a notary stamp: "sealed")
     # e.g. "get my contract notarized"
     Step("lent_verbs", lambda s, t, a: s.lent_verbs.read(t)),
+    # chat's shorthand of a function word ("hav", "frm")
+    # e.g. "grab me some pliers, mine hav gone walkabout"
+    Step("chat_shorthand", lambda s, t, a: spelled_shorthand(t, s.terms.office_words)),
     # chat's "r" for "are"
     # e.g. "mine r blunt, bring me a pen"
     Step("spelled_are", lambda s, t, a: spelled_are(t)),

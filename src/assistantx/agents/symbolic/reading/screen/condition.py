@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
+from assistantx.agents.symbolic.reading.screen.rewrites import purposes
 from assistantx.agents.symbolic.reading.screen.statement import stated_items
 from assistantx.agents.symbolic.reading.screen.terms import Terms, article
 from assistantx.core.english import words as english_words
@@ -31,6 +32,9 @@ def condition(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
             piece,
             "a need that may come later, not a request for now",
             message="Noted. Tell me when you need it and I'll bring it then.",
+            # "need something to peg out the boundary with tomorrow, can you bring me some":
+            # a request beside it for now means the thing needed, said or described
+            context=(*stated_items(terms, piece, requester), *_described(terms, piece)),
         )
     if not piece.acts.condition:
         return None
@@ -46,6 +50,19 @@ def condition(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         message="Noted; I'll keep it in mind.",
         context=named,
     )
+
+
+def _described(terms: Terms, piece: Piece) -> tuple[str, ...]:
+    """The one item a piece says by its purpose ("something to peg out the boundary with"),
+    as a context entry; none where it names none or several."""
+    _, found = purposes(terms, piece.text)
+    names = {t.name: t.id for t in terms.office.item_types}
+    ids = [
+        names[e.meaning[2:].partition(" (to ")[0]]
+        for e in found
+        if e.meaning[2:].partition(" (to ")[0] in names
+    ]
+    return (f"{ids[0]}|",) if len(ids) == 1 else ()
 
 
 def _replacement_offer(terms: Terms, msg: Message, piece: Piece) -> Finding | None:
