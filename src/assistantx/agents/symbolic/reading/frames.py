@@ -154,6 +154,7 @@ class FrameReader:
         to_self: bool = False,
         any_owner: bool = False,
         kept_said: Mapping[str, str] | None = None,
+        kept_from: Mapping[str, str] | None = None,
         named_once: str | None = None,
         message_named: Sequence[str] = (),
         outsider_said: bool = False,
@@ -165,7 +166,9 @@ class FrameReader:
         whom their own item or file goes, so it goes to them, not asked again; ``any_owner``:
         the requester answered whose the thing is with any owner ("anyone's"), so it is
         anyone's, not asked again; ``kept_said``: item type → its one keeper where the whole
-        message says the thing is kept (``said_kept``); ``named_once``: the one colleague the
+        message says the thing is kept (``said_kept``); ``kept_from``: the same, with the
+        places it is said to be taken from too, for a thing read as the requester's own only
+        because they give it; ``named_once``: the one colleague the
         whole message names (``the_one_named``), whom "his" means when the request's own
         words name nobody; ``message_named``: every colleague it names (``the_ones_named``),
         whom "them both" means when the request's own words name nobody before it;
@@ -462,7 +465,17 @@ class FrameReader:
         tasks = [self._my_unknown_thing(t, readings, requester) for t in tasks]
         tasks = [self._kept_fragment(t, clauses, readings.gaps, requester) for t in tasks]
         # "Need the register. ... it'll have to come out of the cabinet": the one kept there
-        tasks = [owned_as_said(t, dict(kept_said or {})) for t in tasks]
+        mine_said = any(m.kind == "self" and m.possessive for m in readings.mentions)
+        tasks = [
+            owned_as_said(
+                t,
+                dict(kept_said or {}),
+                requester,
+                mine_said=mine_said,
+                kept_from=dict(kept_from or {}),
+            )
+            for t in tasks
+        ]
         # "Olek's 4-gas is due a bump test": the owner's thing goes back to its owner
         tasks = [back_to_owner(t, tokens, readings.mentions, requester) for t in tasks]
         # "Zhang's laptop needs printing": never the requester's own file in its place

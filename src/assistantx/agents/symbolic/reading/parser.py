@@ -365,6 +365,7 @@ class InstructionParser:
             to_self=to_self,
             any_owner=any_owner,
             kept_said=kept_where_said(self.office, whole.tokens, whole.mentions),
+            kept_from=kept_where_said(self.office, whole.tokens, whole.mentions, taken_from=True),
             named_once=the_one_named(whole, requester),
             message_named=the_ones_named(whole, requester),
             outsider_said=outsider_only(whole, requester),

@@ -7,6 +7,11 @@ A place or facility of the office said after "out of", or after "it's (kept) in/
 where the thing is kept. An item type exactly one owner keeps there is theirs (a colleague's
 belonging is still asked of them as usual; a supply's owner part is the facility); none or
 several there say nothing, and whose is asked as before.
+
+"from" names it too, only for a thing read as the requester's own because they give it, no
+"my" said: "take him the jump pack from the valet cupboard" is the one kept there, not the
+speaker's own (round 272). A thing nobody's said ("bring me the stapler from the meeting
+room") is read as anyone's, as before.
 """
 
 from __future__ import annotations
@@ -27,10 +32,15 @@ _SUBJECTS = frozenset({"it", "they", "its", "theyre"})
 
 
 def kept_where_said(
-    office: Office, tokens: Sequence[Token], mentions: Sequence[Mention]
+    office: Office,
+    tokens: Sequence[Token],
+    mentions: Sequence[Mention],
+    *,
+    taken_from: bool = False,
 ) -> dict[str, str]:
     """Item type → the one owner part that keeps it at a place the text says the thing
-    comes out of or is in; types kept there by several owners are left out."""
+    comes out of or is in (``taken_from``: or is taken from, "from the valet cupboard");
+    types kept there by several owners are left out."""
     owners: dict[str, set[str]] = {}
     heads = _facility_heads(office)
     for m in mentions:
@@ -40,7 +50,7 @@ def kept_where_said(
             kind, where = "facility", heads[tokens[m.start].word]  # "the cabinet"
         else:
             continue
-        if not _said_as_where_it_is(tokens, m.start):
+        if not _said_as_where_it_is(tokens, m.start, taken_from=taken_from):
             continue
         for kept in items_kept_at(office, kind, where):
             owners.setdefault(kept.type_id, set()).add(kept.owner)
@@ -60,14 +70,15 @@ def _facility_heads(office: Office) -> dict[str, str]:
     return {head: next(iter(ids)) for head, ids in heads.items() if len(ids) == 1}
 
 
-def _said_as_where_it_is(tokens: Sequence[Token], start: int) -> bool:
-    """ "(come) out of the cabinet", "it's (kept) in the cabinet"."""
+def _said_as_where_it_is(tokens: Sequence[Token], start: int, *, taken_from: bool) -> bool:
+    """ "(come) out of the cabinet", "it's (kept) in the cabinet" (``taken_from``: also
+    "from the cabinet")."""
     k = start
     while k > 0 and tokens[k - 1].word in _ARTICLES:
         k -= 1
     words = [t.word for t in tokens[max(0, k - 4) : k]]
-    if words[-2:] == ["out", "of"]:
-        return True
+    if words[-2:] == ["out", "of"] or (taken_from and words[-1:] == ["from"]):
+        return True  # "out of the cabinet", "the jump pack from the valet cupboard"
     if not words or words[-1] not in _IN:
         return False
     rest = words[:-1]
@@ -78,12 +89,25 @@ def _said_as_where_it_is(tokens: Sequence[Token], start: int) -> bool:
     return bool(rest) and rest[-1] in _SUBJECTS
 
 
-def owned_as_said(task: Task, kept: dict[str, str]) -> Task:
+def owned_as_said(
+    task: Task,
+    kept: dict[str, str],
+    requester: str = "",
+    *,
+    mine_said: bool = True,
+    kept_from: dict[str, str] | None = None,
+) -> Task:
     """A fetch of an item whose owner the request leaves unsaid, from the one owner that
-    keeps it where the text says it is."""
-    if task.kind != "transfer" or task.item is None or task.owner is not None or task.source:
+    keeps it where the text says it is. The requester's own read only because they give it
+    ("take him the jump pack", with no "my" said: ``mine_said`` False) is that one too where
+    the place it is taken from keeps someone else's (``kept_from``): "from the valet
+    cupboard" says which it is."""
+    if task.kind != "transfer" or task.item is None or task.source:
         return task
-    owner = kept.get(task.item)
-    if owner is None or owner == task.recipient:
+    defaulted = bool(requester) and task.owner == requester and not mine_said
+    if task.owner is not None and not defaulted:
+        return task
+    owner = ((kept_from or kept) if defaulted else kept).get(task.item)
+    if owner is None or owner == task.recipient or owner == task.owner:
         return task
     return task.model_copy(update={"owner": owner})

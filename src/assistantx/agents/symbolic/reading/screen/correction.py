@@ -547,6 +547,8 @@ def _what_it_is(terms: Terms, tokens: Sequence[Token], rest: str) -> bool:
 
 # who a reason that rules the one said out is told of ("*she*'s using it", "*it*'s broken")
 _REASON_SUBJECTS = frozenset({"he", "she", "they", "it", "that", "its", "thats", "hes", "shes"})
+# a subject with its "is" run in, as typed in chat ("hes out", "shes busy", "its broken")
+_IS_TYPED_IN = frozenset({"hes", "shes", "its", "thats"})
 # what opens a choice said after the reason: "*try* Zhang's", "Zhang's *then*"
 _CHOICE_WORDS = frozenset({"try", "then", "instead", "ask", "get", "use", "maybe", "so"})
 
@@ -569,8 +571,11 @@ def _why_ruled_out(terms: Terms, tokens: Sequence[Token]) -> bool:
     if first.word not in _REASON_SUBJECTS and not (mentions and mentions[0].kind == "person"):
         return False
     words = [t.word for t in tokens[1:]]
-    return first.possessive or any(
-        language.is_finite_verb(w) or language.is_present_participle(w) for w in words
+    # "hes at the area meeting": the subject's "is" typed into it, without its apostrophe
+    return (
+        first.possessive
+        or first.word in _IS_TYPED_IN
+        or any(language.is_finite_verb(w) or language.is_present_participle(w) for w in words)
     )
 
 
@@ -607,8 +612,11 @@ def _choice_after_reason(terms: Terms, rest: str) -> tuple[str, str] | None:
     ]
     if len(mentions) != 1 or others:
         return None
-    if mentions[0].kind == "person" and not mentions[0].possessive:
-        return None  # "..., she's using it. Zhang needs one too": news, no choice
+    chose = any(t.word in _CHOICE_WORDS for t in tokens)
+    if mentions[0].kind == "person" and not mentions[0].possessive and not chose:
+        # "..., she's using it. Zhang needs one too": news, no choice; "ask Dolores
+        # instead", "try Zhang then": the colleague chosen to do it
+        return None
     return fix, after[len(fix) :]
 
 
