@@ -2,7 +2,10 @@
 him a coffee, can you do that?", "Ana was wondering if anyone could take her the stapler". The
 one reported asks for themselves: "him"/"her" in the reported request is that colleague, who
 receives. It is read as the request itself ("could someone bring Professor Zhang a coffee"),
-so the frames read the colleague as its recipient. A report with no such ask ("Zhang asked
+so the frames read the colleague as its recipient; "his"/"her" before where the thing goes
+("bring it to her desk") is theirs too. "she"/"he" as the one reported is the one colleague
+the message named before ("Chen's lunch is in the fridge, she asked if someone could bring
+it to her desk"). A report with no such ask ("Zhang asked
 about the rota") is left alone, and so is one whose reported speaker is no colleague."""
 
 from __future__ import annotations
@@ -38,6 +41,33 @@ _RECEIVING = re.compile(
 )
 
 
+# "his"/"her" before a noun in the reported request: the colleague's ("to her desk")
+_OWNING = re.compile(r"\b(?:his|her)\b(?=\s+[^\W\d_])", re.IGNORECASE)
+# ... where it says where the thing goes: "to Chen's desk"
+_TO_OWN = re.compile(r"\b(?:to|over\s+to|up\s+to)\s+[^\W\d_][\w ]*?['’]s\b", re.IGNORECASE)
+_SUBJECT_PRONOUNS = frozenset({"he", "she"})
+_WORD = re.compile(r"[^\W\d_]+")
+_POSSESSIVE = re.compile(r"['’]s\b")
+
+
+def _one_named_before(text: str, is_person: Callable[[str], bool]) -> str | None:
+    """The one colleague ``text`` names (as said, longest name first), or None where it
+    names none or several."""
+    words = _WORD.findall(_POSSESSIVE.sub("", text))  # "Chen's lunch": Chen
+    found: list[str] = []
+    k = 0
+    while k < len(words):
+        for n in (3, 2, 1):
+            phrase = " ".join(words[k : k + n])
+            if len(words[k : k + n]) == n and is_person(phrase):
+                found.append(phrase)
+                k += n
+                break
+        else:
+            k += 1
+    return found[0] if len(set(found)) == 1 else None
+
+
 def reported_requests(text: str, is_person: Callable[[str], bool]) -> str:
     """``text`` with each request a colleague is reported to have made read as the request
     for them (``is_person``: whether the words are one colleague's name)."""
@@ -45,12 +75,19 @@ def reported_requests(text: str, is_person: Callable[[str], bool]) -> str:
     def said(match: re.Match[str]) -> str:
         said_who = match.group("who")
         who = named_tail(said_who, is_person)  # "so Ana was wondering": Ana
+        lead = said_who[: len(said_who) - len(who)] if who is not None else ""
+        if who is None and said_who.split()[-1].lower() in _SUBJECT_PRONOUNS:
+            # "Chen's lunch is in the fridge, she asked if someone could bring it": the one
+            # colleague the message named before is "she"
+            who = _one_named_before(text[: match.start()], is_person)
+            lead = said_who[: len(said_who) - len(said_who.split()[-1])]
         if who is None:
             return match.group(0)
         rest, found = _RECEIVING.subn(who, match.group("rest"))
-        if not found:
+        # "... bring it to her desk": whose desk it goes to is the colleague's
+        rest, owned = _OWNING.subn(f"{who}'s", rest)
+        if not found and not (owned and _TO_OWN.search(rest)):
             return match.group(0)
-        lead = said_who[: len(said_who) - len(who)]
         return f"{lead}{match.group('modal')} {match.group('doer')} {rest}"
 
     return _REPORTED.sub(said, text)

@@ -43,7 +43,7 @@ def own_doing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         words = words[1:]
     if wish:  # "I'd like to look under the boiler": a plan of one's own, as "want to"
         words = ["want", *words[2 if words[:1] == ["would"] else 1 :]]
-    if _about_to(words):
+    if _about_to(words, terms.lex.operation_words):
         return Finding("statement", piece, "the speaker's own doing, context only")
     rest = after_plan(words, _OWN_PLAN, _BETWEEN)
     if not rest or rest[0] in terms.service_verbs:
@@ -62,10 +62,11 @@ def own_doing(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
     return Finding("statement", piece, "the speaker's own doing, context only")
 
 
-def _about_to(words: list[str]) -> bool:
+def _about_to(words: list[str], office_verbs: frozenset[str]) -> bool:
     """Whether ``words`` (the speaker's subject dropped) say the speaker is about to do a
     thing: "heading in to weigh", "about to print the proofs" ("to", then a verb); a need
-    ("going to need a pen") or an errand ("going to get ...") is asked."""
+    ("going to need a pen") or an errand ("going to get ...") is asked. A verb of the
+    office's own work is a verb where the dictionary lacks it ("about to degrease")."""
     while words and words[0] in _SPEAKER_IS:
         words = words[1:]
     for phrase in _ABOUT_TO:
@@ -74,7 +75,7 @@ def _about_to(words: list[str]) -> bool:
             verb = words[n]
             if verb in _NEEDING or verb in _ERRANDS:
                 return False
-            return verb in language.verb_lemmas(verb)
+            return verb in language.verb_lemmas(verb) or verb in office_verbs
     return False
 
 
