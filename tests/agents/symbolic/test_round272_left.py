@@ -16,6 +16,7 @@ import yaml
 
 from assistantx.agents.symbolic import InstructionParser
 from assistantx.core.office import load_office, parse_office
+from helpers import office_builder as ob
 from helpers.reading import frame_reader
 
 _DEFAULT = Path(__file__).resolve().parents[3] / "dataset" / "office.yaml"
@@ -88,3 +89,48 @@ def test_news_of_another_colleague_is_no_choice() -> None:
     # must not change: "Zhang needs one too" is news after the reason, the request withdrawn
     frame = _lee("bring me wang's stapler, no wait she's using it, Zhang needs one too")
     assert frame.tasks == [] and frame.decline is not None, frame
+
+
+_BRANCH = ob.parsed(
+    lambda: ob.office_file(
+        "Rental branch",
+        [
+            ob.person("chase", "Chase Whitaker", "fuel_card", aliases=["Chase"]),
+            ob.person("kwame", "Kwame Asante", "fuel_card", aliases=["Kwame"]),
+        ],
+        rooms=[ob.room("back", "Back office", 30.0, 6.0)],
+        item_types=[ob.item("fuel_card", "fuel card", synonyms=["card"])],
+        operations=[],
+        facilities=[],
+        home="back",
+    )
+)
+_chase = frame_reader(_BRANCH, "chase")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "get kwame's fuel card out of the key safe for me, need to fill up my own car before I "
+        "go home",
+        "can you grab kwame's fuel card, I'm filling my car for the weekend",
+        "bring me kwame's fuel card pls, it's for personal use",
+    ],
+)
+def test_a_workplace_card_for_a_private_use_is_declined(text: str) -> None:
+    frame = _chase(text)
+    assert frame.tasks == [], frame
+    assert frame.decline is not None and "private" in frame.decline, frame
+    assert "kwame" not in frame.decline.lower(), frame  # no id, no blame
+
+
+def test_a_card_for_the_workplace_or_ones_own_is_no_misuse() -> None:
+    # must not change: the workplace's own errand is fetched; the speaker's own card, for
+    # their own car, is theirs to use (asked where it is, as before)
+    frame = _chase("bring me kwame's fuel card, the van's empty")
+    assert frame.decline is None and frame.question is None, frame
+    assert [(t.item, t.owner) for t in frame.tasks] == [("fuel_card", "kwame")], frame
+    own = _chase("bring me my fuel card, need to fill up my own car")
+    assert own.decline is None and own.question == (
+        "Where is your fuel card? As far as I know you have it with you."
+    ), own

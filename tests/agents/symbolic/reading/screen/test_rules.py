@@ -48,6 +48,7 @@ def test_the_rules_in_priority_order() -> None:
         "unsupported",  # a service's verb said of a drink the office makes ("shred my coffee")
         "destructive",
         "unsupported",  # acting as a colleague ("take Pat's card and log into her account")
+        "unsupported",  # the workplace's card for a private use ("..., to fill my own car")
         "unsupported",  # a send to an account outside ("to my personal gmail")
         "unsupported",  # an absent owner's yes said for them ("Otto is away, ... he won't mind")
         "unsupported",  # behind the owner's back ("borrow Zhang's stapler without telling him")

@@ -61,6 +61,7 @@ from assistantx.agents.symbolic.reading.screen.owner_leave import owner_leave
 from assistantx.agents.symbolic.reading.screen.past_event import past_event
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece
 from assistantx.agents.symbolic.reading.screen.placement import unplaced
+from assistantx.agents.symbolic.reading.screen.private_spending import private_spending
 from assistantx.agents.symbolic.reading.screen.problem import problem
 from assistantx.agents.symbolic.reading.screen.pronoun_exclusion import pronoun_exclusion
 from assistantx.agents.symbolic.reading.screen.pronoun_subject import unnamed_subject
@@ -171,6 +172,8 @@ RULES: tuple[tuple[Verdict, Rule], ...] = (
     ("destructive", destructive),
     # "take Pat's card and log into her account": acting as a colleague, whatever the thing
     ("unsupported", impersonation),
+    # "get Kwame's fuel card, need to fill up my own car": the workplace's money on oneself
+    ("unsupported", private_spending),
     ("unsupported", outside_account),
     ("unsupported", absent_owner),
     ("unsupported", covert),
