@@ -277,6 +277,8 @@ _DESTROYING = frozenset(
     p.split()[0] for key in ("destructive", "destructive_of_others") for p in english.entries(key)
 )
 _CONDITIONS = tuple(tuple(p.split()) for p in english.entries("condition_openers"))
+# The question words that also open a clause of when ("when Wang is in, give him ...")
+_WHEN_CLAUSES = frozenset({"when", "whenever"})
 _LATER = tuple(tuple(p.split()) for p in english.entries("later_times"))
 _DEADLINES = frozenset({"by", "before", "until", "till"})
 _HEDGES = (("itd", "be"), ("it", "would", "be"), ("would", "be"), ("wouldnt", "it", "be"))
@@ -839,6 +841,10 @@ class SpeechActs:
         if first in _WH:
             if second == "about":  # "how about a coffee?"
                 return "polite"
+            if first in _WHEN_CLAUSES and second not in _AUX and self._main_clause(w[1:]):
+                # "when Wang is at the printer give him my file": a clause of when, then
+                # the command, no comma between; "when is Wang back?" asks (its verb first)
+                return None
             return "info"
         asked = second in _ASKEES or self._person_at(w, 1)
         if self.doubts_ability(w):

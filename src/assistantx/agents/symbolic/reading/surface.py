@@ -124,6 +124,7 @@ from assistantx.agents.symbolic.reading.told_then_asked import told_then_asked
 from assistantx.agents.symbolic.reading.tool_verbs import LentVerbs
 from assistantx.agents.symbolic.reading.undone_service import UndoneService
 from assistantx.agents.symbolic.reading.verbless_conjunct import with_gapped_verbs
+from assistantx.agents.symbolic.reading.when_clause import paused_when_clause
 from assistantx.agents.symbolic.reading.withdrawn_thing import withdrawn_thing
 from assistantx.agents.symbolic.reading.work_in_hand import work_as_purpose
 from assistantx.agents.symbolic.reading.work_said_as_product import WorkSaidAsProduct
@@ -499,6 +500,9 @@ STEPS: tuple[Step, ...] = (
     # an abbreviation's stop ends no sentence
     # e.g. "bring the book to Dr. Grace Huang"
     Step("undotted", lambda s, t, a: undotted(t)),
+    # a clause of when run into its command: the comma put back
+    # e.g. "when Wang is at the printer give him my file"
+    Step("when_clause", lambda s, t, a: paused_when_clause(t, s.lex.cue_words)),
     # a second thing wanted only where the first cannot be had: kept back, never fetched too
     # e.g. "bring me a stapler, or if there isn't one, scissors"
     Step("fallback", lambda s, t, a: _fallback(s, t)),
