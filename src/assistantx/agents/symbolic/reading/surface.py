@@ -83,6 +83,7 @@ from assistantx.agents.symbolic.reading.near_possessive import near_possessives
 from assistantx.agents.symbolic.reading.needed_done import needed_done
 from assistantx.agents.symbolic.reading.numeral_one import numeral_ones
 from assistantx.agents.symbolic.reading.obligation import PERSON_WORK
+from assistantx.agents.symbolic.reading.outsider_pronoun import outsider_pronouns
 from assistantx.agents.symbolic.reading.paper_parts_cut import without_paper_parts
 from assistantx.agents.symbolic.reading.picked_form import PickedForm
 from assistantx.agents.symbolic.reading.pictographs import without_pictographs
@@ -189,6 +190,17 @@ class Surface:
 
     def __init__(self, office: Office, lex: Lexicon, terms: Terms) -> None:
         self.office = office
+        # the one-word names of the office's paper ("contract", "form"): what an outsider's
+        # "their" may own, in the speaker's hand
+        paper = office.signable_type()
+        self.paper_words = frozenset(
+            w
+            for n in (
+                (office.item_type(paper).name, *office.item_type(paper).synonyms) if paper else ()
+            )
+            for w in (n.lower(),)
+            if " " not in w
+        )
         self.lex = lex
         self.terms = terms
         self.is_person = terms.is_person_word  # whether a word names a colleague
@@ -500,6 +512,9 @@ STEPS: tuple[Step, ...] = (
     # an abbreviation's stop ends no sentence
     # e.g. "bring the book to Dr. Grace Huang"
     Step("undotted", lambda s, t, a: undotted(t)),
+    # an outsider's pronoun of whose: that outsider's, no colleague to ask about
+    # e.g. "customer at counter 1 wants a copy of their contract, photocopy the one on my desk"
+    Step("outsider_pronoun", lambda s, t, a: outsider_pronouns(t, s.one_name, s.paper_words)),
     # a clause of when run into its command: the comma put back
     # e.g. "when Wang is at the printer give him my file"
     Step("when_clause", lambda s, t, a: paused_when_clause(t, s.lex.cue_words)),
