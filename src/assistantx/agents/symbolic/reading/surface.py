@@ -103,6 +103,7 @@ from assistantx.agents.symbolic.reading.purpose import contracted_needs, wanting
 from assistantx.agents.symbolic.reading.purpose_modifier import without_purpose_modifier
 from assistantx.agents.symbolic.reading.question_preface import without_question_preface
 from assistantx.agents.symbolic.reading.reported_request import reported_requests
+from assistantx.agents.symbolic.reading.restored_pauses import restored_pauses
 from assistantx.agents.symbolic.reading.role_appositive import without_role_appositives
 from assistantx.agents.symbolic.reading.round_trip_work import RoundTripWork
 from assistantx.agents.symbolic.reading.routed_work import RoutedWork
@@ -512,6 +513,9 @@ STEPS: tuple[Step, ...] = (
     # an abbreviation's stop ends no sentence
     # e.g. "bring the book to Dr. Grace Huang"
     Step("undotted", lambda s, t, a: undotted(t)),
+    # a pause left out between two clauses: put back
+    # e.g. "my phone's on 3% can i borrow zhou's charger cable"
+    Step("restored_pauses", lambda s, t, a: restored_pauses(t, s.lex.cue_words)),
     # an outsider's pronoun of whose: that outsider's, no colleague to ask about
     # e.g. "customer at counter 1 wants a copy of their contract, photocopy the one on my desk"
     Step("outsider_pronoun", lambda s, t, a: outsider_pronouns(t, s.one_name, s.paper_words)),
