@@ -62,6 +62,14 @@ _COMMANDS = {"bring", "get", "print", "send", "give", "take", "grab", "find", "s
         ("bring me a pen the one on my desk is dead", "bring me a pen, the one on my desk is dead"),
         ("can u grab me a hairnet forgot mine", "can u grab me a hairnet, forgot mine"),
         ("bring me a torch no wait a lamp", "bring me a torch, no wait a lamp"),
+        ("take it to Miles pls he's on parcels", "take it to Miles pls, he's on parcels"),
+        ("a pen please my biro just died", "a pen please, my biro just died"),
+        (
+            "need to cut ribbon anyone got something sharp",
+            "need to cut ribbon, anyone got something sharp",
+        ),
+        ("take my paper to sun her tray is empty", "take my paper to sun, her tray is empty"),
+        ("Dang needs some wipes he spilled his tea", "Dang needs some wipes, he spilled his tea"),
         # must not change: bound to the clause before, a relative clause, a subject's verb,
         # a name said first, a question, a command's own object
         ("I wonder if you could bring me a pen", "I wonder if you could bring me a pen"),
@@ -86,6 +94,8 @@ _COMMANDS = {"bring", "get", "print", "send", "give", "take", "grab", "find", "s
         ),
         ("hairnet pls mine ripped", "hairnet pls mine ripped"),
         ("bring me a pen, she's waiting", "bring me a pen, she's waiting"),
+        ("any chance someone has a cable?", "any chance someone has a cable?"),
+        ("please I need a pen", "please I need a pen"),
     ],
 )
 def test_the_rewrite(text: str, read: str) -> None:

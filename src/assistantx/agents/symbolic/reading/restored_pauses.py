@@ -33,11 +33,15 @@ from assistantx.core import english, language
 # what a request opens on after the clause before it: a modal, then whom or what it asks of
 _MODALS = r"(?:can|could|would|will|cn|cld|may)"
 _ASKED = r"(?:you|u|ya|i|we|someone|somebody|sombody|anyone|anybody|sum1|sb|ye|it|they|my)"
-_REQUEST = rf"(?:{_MODALS}\s+{_ASKED}|any\s+chance)\b"
+_REQUEST = (
+    rf"(?:{_MODALS}\s+{_ASKED}|any\s+chance"
+    r"|(?:anyone|anybody|someone|somebody)\s+(?:got|have|has)|got\s+(?:anything|something|any))\b"
+)
 # a subject and its verb, said as one word or two
 _STATE_VERBS = (
     r"(?:is|was|has|had|keeps|just|got|went|broke|died|snapped|needs|wants|isnt|wasnt|hasnt"
-    r"|need|want|have|am|cant|can't|forgot|left|lost|ll)"
+    r"|need|want|have|am|cant|can't|forgot|left|lost|ll|spilled|spilt|skipped|dropped|said"
+    r"|says)"
 )
 _SUBJECT_VERB = (
     r"(?:(?:he|she|it|they|we|mine|hers|his|theirs|ours)['’](?:s|re|ve|ll|d)"
@@ -47,7 +51,7 @@ _SUBJECT_VERB = (
 _CORRECTION = r"(?:no\s+wait|no\s+actually|actually\s+no|sorry\s+no|or\s+rather|no\s+sorry)\b"
 # a noun's clause of state: "the fridge is rammed", "the batteries in mine just died"
 _NOUN_STATE = (
-    r"the\s+(?:(?!(?:i|you|u|we|they|he|she)\b)[\w'’]+\s+){1,4}?(?:is|are|was|were|has|have|had|needs|need|keeps|keep|just"
+    r"(?:the|his|her|their|our)\s+(?:(?!(?:i|you|u|we|they|he|she)\b)[\w'’]+\s+){1,4}?(?:is|are|was|were|has|have|had|needs|need|keeps|keep|just"
     r"|cant|can't|won't|wont|isnt|isn't|arent|aren't|looks|look|seems|went|broke|died)\b"
 )
 # a reason with its subject dropped, said of the speaker: "forgot mine", "need a fresh pair"
@@ -60,6 +64,13 @@ _DROPPED = (
 _JOINED = english.words("clause_joins") | english.words("clause_binding_words")
 _OPENING = re.compile(
     rf"(?<=[\w'’%)])(?P<gap>\s+)(?P<open>{_REQUEST}|{_SUBJECT_VERB}|{_CORRECTION})",
+    re.IGNORECASE,
+)
+# after a courtesy said mid-message, a subject opens a clause of its own ("take it to Miles
+# pls he's on parcels", "a pen please my biro just died")
+_AFTER_COURTESY = re.compile(
+    r"(?:(?<=\bplease)|(?<=\bpls)|(?<=\bplz))(?P<gap>\s+)(?P<open>(?:i|i'm|i've|im|ive|he|she|they|we|he's"
+    r"|she's|hes|shes|they're|my|one\s+of)\b)",
     re.IGNORECASE,
 )
 _REASON = re.compile(rf"(?<=[\w'’%)])(?P<gap>\s+)(?P<open>{_NOUN_STATE}|{_DROPPED})", re.IGNORECASE)
@@ -129,6 +140,12 @@ def restored_pauses(text: str, commands: Collection[str] = ()) -> str:
             return match.group(0)  # "Otto could you ...": a name said first, kept as said
         return f",{match.group('gap')}{match.group('open')}"
 
+    def courteous(match: re.Match[str]) -> str:
+        said = [w.lower() for w in _WORDS.findall(match.string[: match.start()])]
+        if len(said) < _LEAST_CLAUSE or not asked(said):
+            return match.group(0)  # "please I ...": the courtesy opens the message
+        return f",{match.group('gap')}{match.group('open')}"
+
     def reason(match: re.Match[str]) -> str:
         said = [w.lower() for w in _WORDS.findall(match.string[: match.start()])]
         if not free(match, after_courtesy=True) or not asked(said):
@@ -166,5 +183,6 @@ def restored_pauses(text: str, commands: Collection[str] = ()) -> str:
         return f",{match.group('gap')}{match.group('open')}"
 
     text = _OPENING.sub(paused, text)
+    text = _AFTER_COURTESY.sub(courteous, text)
     text = _REASON.sub(reason, text)
     return _WORD_AT.sub(command, text) if commands else text
