@@ -125,6 +125,7 @@ from assistantx.agents.symbolic.reading.thing_wants import without_thing_wants
 from assistantx.agents.symbolic.reading.told_then_asked import told_then_asked
 from assistantx.agents.symbolic.reading.tool_verbs import LentVerbs
 from assistantx.agents.symbolic.reading.undone_service import UndoneService
+from assistantx.agents.symbolic.reading.unmarked_possessive import marked_possessives
 from assistantx.agents.symbolic.reading.verbless_conjunct import with_gapped_verbs
 from assistantx.agents.symbolic.reading.when_clause import paused_when_clause
 from assistantx.agents.symbolic.reading.withdrawn_thing import withdrawn_thing
@@ -577,6 +578,9 @@ STEPS: tuple[Step, ...] = (
     # the tool's work said as the office's verb ("notarised" of a notary stamp: "sealed")
     # e.g. "get my contract notarized"
     Step("lent_verbs", lambda s, t, a: s.lent_verbs.read(t)),
+    # a colleague's possessive typed without its apostrophe
+    # e.g. "Grants off today, can you get Amaras spreadsheet"
+    Step("unmarked_possessive", lambda s, t, a: marked_possessives(t, s.name_words, s.one_name)),
     # chat's shorthand of a function word ("hav", "frm")
     # e.g. "grab me some pliers, mine hav gone walkabout"
     Step("chat_shorthand", lambda s, t, a: spelled_shorthand(t, s.terms.office_words)),
