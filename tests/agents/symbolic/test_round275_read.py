@@ -169,3 +169,38 @@ def test_a_later_need_alone_is_still_noted() -> None:
     frame = _dan("need something to peg out the boundary with tomorrow")
     assert frame.tasks == [] and frame.decline is not None, frame
     assert frame.decline.startswith("Noted."), frame
+
+
+_GLAZING = ob.parsed(
+    lambda: ob.office_file(
+        "Glazing lab",
+        [ob.person("priya", "Priya Sandhu", aliases=["Priya"])],
+        rooms=[ob.room("tint_room", "Tint room", 30.0, 6.0)],
+        item_types=[ob.item("job_tray", "job tray", synonyms=["tray"])],
+        operations=[ob.operation("tint", "tint", "dye", input="job_tray")],
+        facilities=[
+            ob.facility("tint_bath", "tint bath", at="tint_room", guards=[], operations=["tint"])
+        ],
+        home="tint_room",
+        everyone_owns=["job_tray"],
+    )
+)
+_priya = frame_reader(_GLAZING, "priya")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The lenses in my job tray need tinting, grey 50 percent.",
+        "my job tray needs tinting",  # must not change
+    ],
+)
+def test_a_thing_the_work_takes_said_needing_it_is_asked(text: str) -> None:
+    frame = _priya(text)
+    assert frame.question is None and frame.decline is None, frame
+    assert _tasks(frame) == [("heat", "job_tray", "priya", "priya")], frame
+
+
+def test_an_unknown_thing_needing_the_offices_work_is_offered_not_noted() -> None:
+    frame = _priya("my lenses need tinting")
+    assert frame.question == "Shall I tint your job tray for you?", frame

@@ -27,6 +27,19 @@ _NEED = re.compile(
 )
 
 
+# "<my unknown thing> need(s) <doing>": the thing said first, the work after it
+_NEEDS_DOING = re.compile(
+    r"\b(?P<det>my|the|these|those|our)\s+"
+    r"(?P<noun>(?:[^\W\d_]+\s+){0,4}?[^\W\d_]+)\s+(?:need|needs)\s+(?P<doing>[^\W\d_]+ing)\b",
+    re.IGNORECASE,
+)
+# "... in my job tray": the office's thing a thing said first is held in
+_HELD_IN = re.compile(
+    r"\b(?:in|inside|on)\s+(?P<det>my|the|our)\s+(?P<holder>(?:[^\W\d_]+\s+){0,2}[^\W\d_]+)$",
+    re.IGNORECASE,
+)
+
+
 def needed_done(
     text: str, work_forms: Collection[str], names_something: Callable[[str], bool]
 ) -> str:
@@ -42,4 +55,22 @@ def needed_done(
             return m.group(0)  # "need my contract photocopied": a known thing, as before
         return f"get {m.group('det')} {m.group('noun')} {m.group('done')}"
 
-    return _NEED.sub(get, text)
+    def get_done(m: re.Match[str]) -> str:
+        doing = m.group("doing").lower()
+        if doing not in work_forms:
+            return m.group(0)
+        lemma = next(iter(sorted(language.verb_lemmas(doing))), None)
+        forms = language.verb_inflections(lemma) if lemma else {}
+        done = forms.get("VBN") or forms.get("VBD") or ()  # "tinted"
+        if not done:
+            return m.group(0)
+        det, noun = m.group("det"), m.group("noun")
+        held = _HELD_IN.search(noun)
+        if held is not None and names_something(held.group("holder")):
+            # "the lenses in my job tray": what the work takes is the thing they are in
+            det, noun = held.group("det"), held.group("holder")
+        elif names_something(noun):
+            return m.group(0)  # "my job tray needs tinting": a known thing, as before
+        return f"get {det} {noun} {done[0]}"
+
+    return _NEEDS_DOING.sub(get_done, _NEED.sub(get, text))
