@@ -22,9 +22,12 @@ from assistantx.core import language
 _NEED = re.compile(
     r"\b(?:(?:i|we)\s+(?:really\s+|just\s+|still\s+)?)?(?P<need>need|want)\s+"
     r"(?P<det>my|the|this|that|our|these|those)\s+"
-    r"(?P<noun>(?:[^\W\d_]+\s+){0,2}?[^\W\d_]+)\s+(?P<done>[^\W\d_]+ed)\b",
+    r"(?P<noun>(?:[^\W\d_]+\s+){0,7}?[^\W\d_]+)\s+(?P<done>[^\W\d_]+ed)\b",
     re.IGNORECASE,
 )
+# the most words a known thing's name and nothing else takes ("my contract", "the tray
+# list"); more is the thing with a clause about it ("the book a customer just sold us")
+_NAME_ALONE = 2
 
 
 # "<my unknown thing> need(s) <doing>": the thing said first, the work after it
@@ -51,8 +54,11 @@ def needed_done(
         done = m.group("done").lower()
         if done not in work_forms or not language.is_past_participle(done):
             return m.group(0)
-        if names_something(m.group("noun")):
+        noun = m.group("noun")
+        if names_something(noun) and len(noun.split()) <= _NAME_ALONE:
             return m.group(0)  # "need my contract photocopied": a known thing, as before
+        if len(noun.split()) > _NAME_ALONE + 1 and not names_something(noun):
+            return m.group(0)  # a long phrase of nothing the office knows: read as said
         return f"get {m.group('det')} {m.group('noun')} {m.group('done')}"
 
     def get_done(m: re.Match[str]) -> str:

@@ -48,7 +48,11 @@ _SUBJECT_VERB = (
     r"|hes|shes|theyre"
     rf"|(?:he|she|they|mine|hers|his|theirs|ours)\s+{_STATE_VERBS})\b"
 )
-_CORRECTION = r"(?:no\s+wait|no\s+actually|actually\s+no|sorry\s+no|or\s+rather|no\s+sorry)\b"
+_CORRECTION = (
+    r"(?:no\s+wait|no\s+actually|actually\s+no|sorry\s+no|or\s+rather|no\s+sorry"
+    r"|actually\s+never\s+mind|never\s+mind|actually\s+forget\s+it|forget\s+it"
+    r"|actually\s+scratch\s+that|scratch\s+that)\b"
+)
 # a noun's clause of state: "the fridge is rammed", "the batteries in mine just died"
 _NOUN_STATE = (
     r"(?:the|his|her|their|our)\s+(?:(?!(?:i|you|u|we|they|he|she)\b)[\w'’]+\s+){1,4}?(?:is|are|was|were|has|have|had|needs|need|keeps|keep|just"

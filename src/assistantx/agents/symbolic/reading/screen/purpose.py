@@ -100,6 +100,8 @@ def tool_use(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
     no tool asked for ("get my letters stamped with Lee's seal"), it is read as before."""
     if piece.acts.imperative:
         return None
+    if _thing_needs_the_tools_work(terms, msg, piece):
+        return Finding("statement", piece, "what the tool asked for is for: context only")
     tokens, mentions = piece.lexed.tokens, piece.lexed.mentions
     words = [t.word for t in tokens]
     while words and words[-1] in _COURTESY:
@@ -117,6 +119,25 @@ def tool_use(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findin
     if not any(tools & set(terms.named(p.lexed, "item")) for p in others):
         return None
     return Finding("statement", piece, "what the tool asked for is for: context only")
+
+
+def _thing_needs_the_tools_work(terms: Terms, msg: Message, piece: Piece) -> bool:
+    """ "Could someone lend me a bow stringer? A beginner's bow needs stringing.": a thing
+    said to need a doing that a tool asked for before is declared for (the stringer's
+    purpose "string a bow") is what the tool is borrowed for, the speaker's own doing."""
+    if piece.asks or set(piece.words) & _ADDRESSEE or not msg.asked_before(piece):
+        return False
+    words = piece.words
+    at = next((n for n, w in enumerate(words) if w in _NEED), None)
+    if at is None or at + 1 >= len(words) or not words[at + 1].endswith("ing"):
+        return False
+    doing = language.verb_lemmas(words[at + 1])
+    asked = {i for p in msg.pieces if p.end <= piece.start for i in terms.named(p.lexed, "item")}
+    return any(
+        language.verb_lemmas(purpose.split()[0]) & doing or purpose.split()[0] in doing
+        for item in asked
+        for purpose in terms.office.item_type(item).purposes
+    )
 
 
 def _outsider(terms: Terms, subject: list[str]) -> bool:

@@ -15,6 +15,9 @@ from assistantx.agents.symbolic.reading.screen.english import DETERMINERS, start
 from assistantx.agents.symbolic.reading.screen.findings import Finding
 from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece, sub_pieces
 from assistantx.agents.symbolic.reading.screen.terms import Terms
+from assistantx.core import english
+
+_WITH_OBJECT = frozenset(tuple(e.split()) for e in english.entries("unsafe_acts_with_object"))
 
 
 def unsafe(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
@@ -25,8 +28,8 @@ def unsafe(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding 
             if not starts_with(words, at, act):
                 continue
             after = at + len(act)
-            if len(act) == 1 and not _has_object(piece, words, after):
-                continue  # "torch please", "a light": the thing, not the act
+            if (len(act) == 1 or act in _WITH_OBJECT) and not _has_object(piece, words, after):
+                continue  # "torch please", "a light", "set off for home": no act on a thing
             if _offered(terms, msg, piece, act):
                 continue
             return _declined(terms, piece, " ".join(act))

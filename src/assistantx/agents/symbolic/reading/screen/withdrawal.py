@@ -16,6 +16,7 @@ from assistantx.agents.symbolic.reading.speech_acts import without_fillers
 from assistantx.core import english, language
 
 _PRONOUNS = english.words("pronouns")
+_NEED = english.words("need_verbs")
 # the words that open a withdrawal with an object ("don't worry about", "never mind")
 _WITHDRAW_HEADS = tuple(tuple(p.split()) for p in english.entries("withdraw_heads"))
 # "..., Thandi's already run one off", "..., Ravi has just done it": done by now, a reason
@@ -67,6 +68,14 @@ def withdrawn(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
         # "never mind, found the stapler in my drawer, thanks": the reason for it, told as
         # what happened, not an errand; a request after it ("..., bring me a pen instead")
         # is read, and so is a bare correction ("no wait, a pencil": asked about)
+        return Finding("withdrawn", piece, "the reason the request is withdrawn")
+    if (
+        msg.withdrawing
+        and content(piece.words)[:1] in ([w] for w in _NEED)
+        and not any(m.kind in ("item", "facility", "person") for m in piece.lexed.mentions)
+    ):
+        # "actually forget it, i'll go myself, need the walk": a need of nothing the office
+        # has, after the withdrawal, is why it is withdrawn, never a thing asked for
         return Finding("withdrawn", piece, "the reason the request is withdrawn")
     if msg.withdrawing and _still_wanted(piece):
         # "recycle my old note... actually scratch that, I still need it": "it" is the thing
