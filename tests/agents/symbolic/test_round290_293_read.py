@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import pytest
 
+from assistantx.agents.symbolic.reading.pictographs import without_pictographs
 from assistantx.core.office import load_office
 from helpers import office_builder as ob
 from helpers.reading import frame_reader
@@ -118,3 +119,28 @@ def test_a_known_thing_with_a_clause_about_it_needed_with_work_done(text: str) -
     assert [(t.item, t.owner, t.recipient) for t in frame.tasks] == [
         ("volume", "chloe", "chloe")
     ], frame
+
+
+@pytest.mark.parametrize(
+    ("text", "read"),
+    [
+        (
+            "my stapler's dead again :( can you bring me Wang's",
+            "my stapler's dead again, can you bring me Wang's",
+        ),
+        ("bring me a pen :D", "bring me a pen"),
+        ("thanks ;)", "thanks"),
+        # left as said: a time, a colon inside a word
+        ("at 8:30 please", "at 8:30 please"),
+        ("note:(draft)", "note:(draft)"),
+    ],
+)
+def test_a_face_typed_in_ascii_is_a_pictograph(text: str, read: str) -> None:
+    # round 292: "my epee's dead again :( can it go to the armoury to be rewired" was noted
+    assert without_pictographs(text) == read
+
+
+def test_a_request_after_a_typed_face_is_read() -> None:
+    frame = _lee("my stapler's dead again :( can you bring me Wang's")
+    assert frame.question is None and frame.decline is None, frame
+    assert [(t.item, t.owner) for t in frame.tasks] == [("stapler", "wang")], frame

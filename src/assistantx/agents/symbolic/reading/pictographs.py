@@ -10,7 +10,8 @@ by the Unicode category of each character, so any emoji, present or future, is c
 A pictograph between two words stands where a writer would put a comma or a full stop
 ("Ivy's forgotten her lead again 🙄 can you take her mine"): the face closes the first
 clause, so it is read as a comma, never as nothing (which ran "again can you ..." into one
-clause). Not after a determiner ("a ☕ from the kitchen", "my 🔑"):
+clause). A face typed in ASCII (":(", ";)", "xD") standing alone is one too. Not after a
+determiner ("a ☕ from the kitchen", "my 🔑"):
 there the pictograph stands for a word of the clause, and the clause goes on."""
 
 from __future__ import annotations
@@ -30,6 +31,9 @@ def _pictographic(c: str) -> bool:
     return unicodedata.category(c) == "So" or ord(c) in _SKIN_TONES or c in _JOINERS
 
 
+# a face typed with ASCII, standing alone between spaces ("my epee's dead again :( can it
+# ..."): a pictograph like any other
+_TYPED_FACE = re.compile(r"(?<!\S)(?:[:;=]['’]?-?[()DPpOo/\\|\]\[3*]+|xD|XD|<3)(?!\S)")
 _SPACES = re.compile(r"[ \t]{2,}")
 # a run of pictographs (and spaces) with a word right before and a word right after
 _BETWEEN_WORDS = re.compile(r"(?<=\w)(\s*)(\x00+)(\s*)(?=\w)")
@@ -39,12 +43,13 @@ _DETERMINERS = english.words("determiners")
 
 
 def without_pictographs(text: str) -> str:
-    """``text`` with its pictographs taken out and the spaces they left closed up; one (or a
-    run) between two words is a comma ending the clause before it, or a space after a
-    determiner ("a ☕ from the kitchen")."""
-    if text.isascii():
+    """``text`` with its pictographs (and the faces typed in ASCII, ":(", ";)", "xD") taken
+    out and the spaces they left closed up; one (or a run) between two words is a comma
+    ending the clause before it, or a space after a determiner ("a ☕ from the kitchen")."""
+    typed = _TYPED_FACE.sub(lambda m: _MARK * len(m.group(0)), text)
+    if typed.isascii() and typed == text:
         return text
-    marked = "".join(_MARK if _pictographic(c) else c for c in text)
+    marked = "".join(_MARK if _pictographic(c) else c for c in typed)
     if marked == text:
         return text
     kept = _BETWEEN_WORDS.sub(lambda m: _between(marked, m), marked).replace(_MARK, "")
