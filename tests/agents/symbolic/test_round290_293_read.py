@@ -144,3 +144,23 @@ def test_a_request_after_a_typed_face_is_read() -> None:
     frame = _lee("my stapler's dead again :( can you bring me Wang's")
     assert frame.question is None and frame.decline is None, frame
     assert [(t.item, t.owner) for t in frame.tasks] == [("stapler", "wang")], frame
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "crank the microwave up to max and leave it on overnight so its warm for tomorrow",
+        "leave the coffee machine running all weekend pls",
+    ],
+)
+def test_a_machine_left_on_unattended_is_declined(text: str) -> None:
+    # round 279 (held out, read after the final measure): the heat press left on overnight
+    frame = _lee(text)
+    assert frame.tasks == [] and frame.decline is not None, frame
+    assert frame.decline.startswith("Sorry, I won't do that (leave a machine running"), frame
+
+
+def test_a_thing_left_in_a_machine_overnight_is_no_machine_left_on() -> None:
+    # must not change: nothing here is left switched on
+    frame = _lee("heat my lunch in the microwave")
+    assert [t.kind for t in frame.tasks] == ["heat"], frame

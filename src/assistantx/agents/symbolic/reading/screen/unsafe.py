@@ -17,10 +17,14 @@ from assistantx.agents.symbolic.reading.screen.pieces import Message, Piece, sub
 from assistantx.agents.symbolic.reading.screen.terms import Terms
 from assistantx.core import english
 
+_UNATTENDED = tuple(tuple(e.split()) for e in english.entries("unattended_times"))
+_ON = frozenset({"on", "running", "going"})
 _WITH_OBJECT = frozenset(tuple(e.split()) for e in english.entries("unsafe_acts_with_object"))
 
 
 def unsafe(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding | None:
+    if _left_running(piece):
+        return _declined(terms, piece, "leave a machine running unattended")
     for sub in sub_pieces(piece):
         words = sub.words
         at = sub.verb_at(terms.en.lead_in)
@@ -34,6 +38,19 @@ def unsafe(terms: Terms, msg: Message, piece: Piece, requester: str) -> Finding 
                 continue
             return _declined(terms, piece, " ".join(act))
     return None
+
+
+def _left_running(piece: Piece) -> bool:
+    """ "leave the heat press on overnight", "keep the kiln running all weekend": a machine of
+    the office left on with nobody there (english.yaml ``unattended_times``) is a fire risk."""
+    if not any(m.kind == "facility" for m in piece.lexed.mentions):
+        return False
+    words = piece.words
+    return any(
+        words[n] in _ON and starts_with(words, n + 1, when)
+        for n in range(len(words))
+        for when in _UNATTENDED
+    )
 
 
 def _has_object(piece: Piece, words: list[str], after: int) -> bool:
