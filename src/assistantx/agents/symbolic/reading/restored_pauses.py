@@ -55,8 +55,9 @@ _CORRECTION = (
 )
 # a noun's clause of state: "the fridge is rammed", "the batteries in mine just died"
 _NOUN_STATE = (
-    r"(?:the|his|her|their|our)\s+(?:(?!(?:i|you|u|we|they|he|she)\b)[\w'’]+\s+){1,4}?(?:is|are|was|were|has|have|had|needs|need|keeps|keep|just"
-    r"|cant|can't|won't|wont|isnt|isn't|arent|aren't|looks|look|seems|went|broke|died)\b"
+    r"(?:the|his|her|their|our)\s+(?:(?!(?:i|you|u|we|they|he|she)\b)[\w'’]+\s+){1,4}?"
+    r"(?:is|are|was|were|has|have|had|needs|need|keeps|keep|just|cant|can't|won't|wont|isnt"
+    r"|isn't|arent|aren't|looks|look|seems|went|broke|died)\b"
 )
 # a reason with its subject dropped, said of the speaker: "forgot mine", "need a fresh pair"
 _DROPPED = (
@@ -73,8 +74,8 @@ _OPENING = re.compile(
 # after a courtesy said mid-message, a subject opens a clause of its own ("take it to Miles
 # pls he's on parcels", "a pen please my biro just died")
 _AFTER_COURTESY = re.compile(
-    r"(?:(?<=\bplease)|(?<=\bpls)|(?<=\bplz))(?P<gap>\s+)(?P<open>(?:i|i'm|i've|im|ive|he|she|they|we|he's"
-    r"|she's|hes|shes|they're|my|one\s+of)\b)",
+    r"(?:(?<=\bplease)|(?<=\bpls)|(?<=\bplz))(?P<gap>\s+)"
+    r"(?P<open>(?:i|i'm|i've|im|ive|he|she|they|we|he's|she's|hes|shes|they're|my|one\s+of)\b)",
     re.IGNORECASE,
 )
 _REASON = re.compile(rf"(?<=[\w'’%)])(?P<gap>\s+)(?P<open>{_NOUN_STATE}|{_DROPPED})", re.IGNORECASE)
@@ -136,8 +137,10 @@ def restored_pauses(text: str, commands: Collection[str] = ()) -> str:
         starts = list(_CLAUSE_START.finditer(head))
         return [w.lower() for w in _WORDS.findall(head[starts[-1].end() if starts else 0 :])]
 
+    asking = frozenset(commands) | _MODAL_WORDS
+
     def asked(words: list[str]) -> bool:
-        return bool(set(words) & (set(commands) | _MODAL_WORDS))
+        return not asking.isdisjoint(words)
 
     def paused(match: re.Match[str]) -> str:
         if not free(match) or len(clause_before(match)) < _LEAST_CLAUSE:
@@ -154,16 +157,12 @@ def restored_pauses(text: str, commands: Collection[str] = ()) -> str:
         said = [w.lower() for w in _WORDS.findall(match.string[: match.start()])]
         if not free(match, after_courtesy=True) or not asked(said):
             return match.group(0)  # a reason follows a request, never a statement
-        before = _LAST_WORD.search(match.string, 0, match.start())
-        if before is not None and before.group(1).lower() in commands:
+        before = said[-1]  # ``free`` found a word before it
+        if before in commands:
             return match.group(0)  # "print the slides ...": the command's own object
-        if before is not None and not _ends_a_thing(before.group(1).lower()):
+        if not _ends_a_thing(before):
             return match.group(0)  # "I will probably need ...": the clause's own verb
-        if (
-            before is not None
-            and match.group("open").lower().startswith("need")
-            and language.is_plural_noun(before.group(1).lower())
-        ):
+        if match.group("open").lower().startswith("need") and language.is_plural_noun(before):
             return match.group(0)  # "the milk samples need to stay cold": their verb
         return f",{match.group('gap')}{match.group('open')}"
 

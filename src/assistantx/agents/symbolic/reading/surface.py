@@ -196,12 +196,7 @@ class Surface:
         # "their" may own, in the speaker's hand
         paper = office.signable_type()
         self.paper_words = frozenset(
-            w
-            for n in (
-                (office.item_type(paper).name, *office.item_type(paper).synonyms) if paper else ()
-            )
-            for w in (n.lower(),)
-            if " " not in w
+            name for name, type_id in lex.items.items() if type_id == paper and " " not in name
         )
         self.lex = lex
         self.terms = terms
