@@ -54,15 +54,13 @@ def condition(terms: Terms, msg: Message, piece: Piece, requester: str) -> Findi
 
 def _described(terms: Terms, piece: Piece) -> tuple[str, ...]:
     """The one item a piece says by its purpose ("something to peg out the boundary with"),
-    as a context entry; none where it names none or several."""
-    _, found = purposes(terms, piece.text)
-    names = {t.name: t.id for t in terms.office.item_types}
-    ids = [
-        names[e.meaning[2:].partition(" (to ")[0]]
-        for e in found
-        if e.meaning[2:].partition(" (to ")[0] in names
-    ]
-    return (f"{ids[0]}|",) if len(ids) == 1 else ()
+    as a context entry: the piece read again with the purpose said as that item's name; none
+    where it names none or several."""
+    described, found = purposes(terms, piece.text)
+    if not found:
+        return ()
+    items = terms.named(terms.lex.read(described), "item")
+    return (f"{items[0]}|",) if len(items) == 1 else ()
 
 
 def _replacement_offer(terms: Terms, msg: Message, piece: Piece) -> Finding | None:
